@@ -1,0 +1,28 @@
+#pragma once
+// Everything a scene file says: geometry and camera (core), materials and lights (shading), and
+// the render settings it asks for (command-line flags override them).
+#include <optional>
+#include <string>
+
+#include "core/scene.h"
+#include "core/image_output.h"
+#include "shading/shading_scene.h"
+#include "shading/whitted.h"
+
+namespace rayo {
+
+struct RenderSettings {
+    int spp = 1;
+    int tile_size = 16;
+    SphereMath sphere_math = SphereMath::Stable;
+    WhittedSettings whitted;
+};
+
+struct SceneDescription {
+    std::string source;  // file path, or "<default>" for the built-in scene
+    Scene scene;
+    ShadingScene shading;
+    RenderSettings settings;
+};
+
+}  // namespace rayo

@@ -1,0 +1,61 @@
+#pragma once
+// The Embree acceleration structure: one committed RTCScene per render holding the spheres and
+// cones as user geometry (our own intersection code) and the meshes as Embree triangles.
+// Follows the Embree 3 call order: device -> scene -> geometries -> commit, then trace.
+#include <cstdint>
+#include <vector>
+
+#include <embree3/rtcore.h>
+
+#include "core/ray.h"
+#include "core/scene.h"
+
+namespace rayo {
+
+struct AccelOptions {
+    SphereMath sphere_math = SphereMath::Stable;
+    bool robust = true;  // RTC_SCENE_FLAG_ROBUST: watertight triangles (DESIGN.md)
+};
+
+enum class PrimitiveKind : uint8_t { Sphere, Cone, Triangle };
+
+// What the shader needs to know about the nearest hit.
+struct SurfaceHit {
+    float t = 0.0f;
+    Vec3 position{0.0f};         // on the surface (sphere hits re-projected onto the sphere)
+    Vec3 geometric_normal{0.0f}; // unit, outward (spheres, cones) or by winding (triangles)
+    Vec3 shading_normal{0.0f};   // unit, interpolated where the mesh has normals; same side as Ng
+    float object_size = 0.0f;    // radius or triangle extent: scales the spawned-ray offset
+    uint32_t material = 0;
+    PrimitiveKind kind = PrimitiveKind::Sphere;
+};
+
+class Accel {
+public:
+    Accel(const Scene& scene, const AccelOptions& options = {});
+    ~Accel();
+    Accel(const Accel&) = delete;
+    Accel& operator=(const Accel&) = delete;
+
+    bool intersect(const Ray& ray, SurfaceHit& hit) const;
+    // True when anything lies on the ray within (tnear, tfar).
+    bool occluded(const Ray& ray) const;
+
+    const AccelOptions& options() const { return m_options; }
+    size_t primitive_count() const { return m_primitive_count; }
+
+private:
+    struct GeometryRef {
+        PrimitiveKind kind;
+        uint32_t index;  // mesh index for triangles; unused for spheres and cones
+    };
+
+    const Scene& m_scene;
+    AccelOptions m_options;
+    RTCDevice m_device = nullptr;
+    RTCScene m_rtc_scene = nullptr;
+    std::vector<GeometryRef> m_geometries;  // indexed by Embree geomID
+    size_t m_primitive_count = 0;
+};
+
+}  // namespace rayo

@@ -1,0 +1,35 @@
+#pragma once
+// Writes the film: EXR untouched (scene-linear, float or half, with metadata); PNG/TIFF/JPEG
+// through an OpenColorIO display/view transform. Files are written to a temporary name in the
+// target directory and renamed, so a failure never leaves a partial file under the final name.
+#include <map>
+#include <string>
+
+#include "core/film.h"
+
+namespace rayo {
+
+enum class RangeMode {
+    Clamp,      // display values clamped to [0,1] (seed 000, first option)
+    Normalize,  // the whole image divided by its per-channel maximum before the view (seed 000)
+};
+
+struct OutputOptions {
+    std::string display;  // empty: the config's default display
+    std::string view;     // empty: the display's default view
+    RangeMode range = RangeMode::Clamp;
+    bool half_float_exr = false;
+    std::map<std::string, std::string> metadata;  // e.g. "rayo:scene", "rayo:spp", "Software"
+};
+
+// The OCIO config rayo uses: $OCIO when set, else the shipped config (installed or source tree).
+std::string ocio_config_path();
+
+// Throws InputError (where = the path) for an unknown extension, an unknown display/view or an
+// unwritable location; the final file exists only when the call succeeds.
+void write_image(const Film& film, const std::string& path, const OutputOptions& options);
+
+// Lists "display/view" pairs of the active config (for --help and errors).
+std::string describe_displays_and_views();
+
+}  // namespace rayo

@@ -1,0 +1,31 @@
+#pragma once
+// A triangle mesh as Embree consumes it: shared vertex positions, optional per-vertex normals
+// (NFF `pp` patches, smooth OBJ/glTF meshes) and one material id per triangle.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+
+namespace rayo {
+
+struct TriangleMesh {
+    std::string name;
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;  // empty, or one per position
+    std::vector<std::array<uint32_t, 3>> triangles;
+    std::vector<uint32_t> materials;  // one per triangle
+    // Two-sided meshes are hit from both sides (shading faces the normal forward). A one-sided
+    // mesh is seen only from the side its counter-clockwise winding faces (NFF polygons without
+    // transmission, DESIGN.md "NFF conventions"); back-facing hits are ignored by every ray.
+    bool one_sided = false;
+
+    size_t triangle_count() const { return triangles.size(); }
+    // Appends a convex polygon as a triangle fan; returns false when it has fewer than three
+    // vertices or all its triangles are degenerate (zero area).
+    bool add_convex_polygon(const std::vector<Vec3>& vertices, const std::vector<Vec3>& vertex_normals,
+                            uint32_t material);
+};
+
+}  // namespace rayo

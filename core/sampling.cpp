@@ -1,0 +1,18 @@
+#include "core/sampling.h"
+
+namespace rayo {
+
+PixelOffset stratified_offset(uint32_t x, uint32_t y, uint32_t s, uint32_t spp) {
+    if (spp <= 1) return {0.0f, 0.0f};
+    uint32_t columns = 1;
+    for (uint32_t c = 1; c * c <= spp; ++c) {
+        if (spp % c == 0) columns = c;
+    }
+    const uint32_t rows = spp / columns;
+    const uint32_t column = s % columns, row = s / columns;
+    const float jitter_x = sample_uniform(x, y, s, 0), jitter_y = sample_uniform(x, y, s, 1);
+    return {(static_cast<float>(column) + jitter_x) / static_cast<float>(columns) - 0.5f,
+            (static_cast<float>(row) + jitter_y) / static_cast<float>(rows) - 0.5f};
+}
+
+}  // namespace rayo

@@ -1,0 +1,41 @@
+#pragma once
+// Stateless random numbers: every value is a hash of (pixel, sample, dimension, frame), so the
+// image does not depend on the thread count or tile order (DESIGN.md "Hot-path rules").
+#include <cstdint>
+
+namespace rayo {
+
+// A 32-bit integer finaliser (the "lowbias32" constants of Chris Wellons' hash prospector).
+inline uint32_t hash_u32(uint32_t x) {
+    x ^= x >> 16;
+    x *= 0x7feb352dU;
+    x ^= x >> 15;
+    x *= 0x846ca68bU;
+    x ^= x >> 16;
+    return x;
+}
+
+inline uint32_t hash_combine(uint32_t seed, uint32_t value) {
+    return hash_u32(seed ^ (value + 0x9e3779b9U + (seed << 6) + (seed >> 2)));
+}
+
+// Uniform in [0, 1): the top 24 bits of the hash.
+inline float sample_uniform(uint32_t x, uint32_t y, uint32_t sample, uint32_t dimension,
+                            uint32_t frame = 0) {
+    uint32_t h = hash_u32(x);
+    h = hash_combine(h, y);
+    h = hash_combine(h, sample);
+    h = hash_combine(h, dimension);
+    h = hash_combine(h, frame);
+    return static_cast<float>(h >> 8) * (1.0f / 16777216.0f);
+}
+
+// Stratified sub-pixel offset in [-0.5, 0.5)² for sample `s` of `spp`: the pixel is split into
+// columns × rows strata (columns the largest divisor of spp not above √spp), one jittered sample
+// each. One sample per pixel goes through the pixel centre.
+struct PixelOffset {
+    float dx, dy;
+};
+PixelOffset stratified_offset(uint32_t x, uint32_t y, uint32_t s, uint32_t spp);
+
+}  // namespace rayo

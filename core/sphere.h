@@ -1,0 +1,104 @@
+#pragma once
+// Ray/sphere intersection (seed 000 eqs. [3]-[9]) in two forms:
+//  - SphereMath::Seed: the seed's algebraic form B = 2·Rd·(R0−Sc), C = |R0−Sc|² − Sr²,
+//    D = B² − 4C, t = (−B ∓ √D)/2. Kept for comparison: it cancels catastrophically for small
+//    spheres far from the origin of the ray.
+//  - SphereMath::Stable (default, DESIGN.md "Numerics"): Δ from the perpendicular distance
+//    r² − |f − (f·d)d|², roots via q = −(b + sign(b)√Δ), t = c/q and t = q, c = (|f|−r)(|f|+r).
+// Both apply the seed's rule: the near root if it lies past tnear, else the far root (the ray
+// starts inside: seed 000 hits at t1 and flips the normal).
+#include <cmath>
+#include <cstdint>
+
+#include "core/math.h"
+
+namespace rayo {
+
+enum class SphereMath { Seed, Stable };
+
+struct Sphere {
+    Vec3 center{0.0f};
+    float radius = 1.0f;
+    uint32_t material = 0;
+};
+
+struct SphereHit {
+    float t = 0.0f;
+    bool far_root = false;  // hit at t1: the ray started inside, the normal is flipped
+};
+
+// `direction` must be unit length. Returns true and fills `hit` for the nearest root in
+// (tnear, tfar). Templated on the scalar so the double reference shares the code.
+template <typename T>
+bool intersect_sphere_seed(const glm::vec<3, T>& origin, const glm::vec<3, T>& direction,
+                           const glm::vec<3, T>& center, T radius, T tnear, T tfar, T& t_out,
+                           bool& far_root) {
+    const glm::vec<3, T> f = origin - center;
+    const T b = T(2) * glm::dot(direction, f);           // seed 000 eq. [6]
+    const T c = glm::dot(f, f) - radius * radius;        // seed 000 eq. [7]
+    const T discriminant = b * b - T(4) * c;             // seed 000 eq. [8]
+    if (!(discriminant > T(0))) return false;            // D <= 0: miss (tangent counts as miss)
+    const T root = std::sqrt(discriminant);
+    const T t0 = (-b - root) / T(2);
+    if (t0 > tnear && t0 < tfar) {
+        t_out = t0;
+        far_root = false;
+        return true;
+    }
+    const T t1 = (-b + root) / T(2);
+    if (t1 > tnear && t1 < tfar) {
+        t_out = t1;
+        far_root = true;
+        return true;
+    }
+    return false;
+}
+
+template <typename T>
+bool intersect_sphere_stable(const glm::vec<3, T>& origin, const glm::vec<3, T>& direction,
+                             const glm::vec<3, T>& center, T radius, T tnear, T tfar, T& t_out,
+                             bool& far_root) {
+    const glm::vec<3, T> f = origin - center;
+    const T b = glm::dot(f, direction);
+    const glm::vec<3, T> perpendicular = f - b * direction;
+    const T discriminant = radius * radius - glm::dot(perpendicular, perpendicular);
+    if (!(discriminant > T(0))) return false;
+    const T length_f = glm::length(f);
+    const T c = (length_f - radius) * (length_f + radius);
+    const T q = -(b + std::copysign(std::sqrt(discriminant), b));
+    // Roots of t² + 2bt + c = 0 are q and c/q (Vieta); q != 0 because discriminant > 0.
+    T t0 = c / q, t1 = q;
+    if (t0 > t1) std::swap(t0, t1);
+    if (t0 > tnear && t0 < tfar) {
+        t_out = t0;
+        far_root = false;
+        return true;
+    }
+    if (t1 > tnear && t1 < tfar) {
+        t_out = t1;
+        far_root = true;
+        return true;
+    }
+    return false;
+}
+
+template <typename T>
+bool intersect_sphere(SphereMath math, const glm::vec<3, T>& origin,
+                      const glm::vec<3, T>& direction, const glm::vec<3, T>& center, T radius,
+                      T tnear, T tfar, T& t_out, bool& far_root) {
+    return math == SphereMath::Seed
+               ? intersect_sphere_seed(origin, direction, center, radius, tnear, tfar, t_out,
+                                       far_root)
+               : intersect_sphere_stable(origin, direction, center, radius, tnear, tfar, t_out,
+                                         far_root);
+}
+
+// Seed 000 eq. [9]: n = (P − Sc)/Sr, flipped for a far-root hit.
+template <typename T>
+glm::vec<3, T> sphere_normal(const glm::vec<3, T>& point, const glm::vec<3, T>& center, T radius,
+                             bool far_root) {
+    const glm::vec<3, T> n = (point - center) / radius;
+    return far_root ? -n : n;
+}
+
+}  // namespace rayo

@@ -1,0 +1,30 @@
+#pragma once
+// Ray statistics, counted per thread without sharing and merged after the render
+// (DESIGN.md "Hot-path rules").
+#include <cstdint>
+
+namespace rayo {
+
+struct RayCounters {
+    uint64_t camera = 0;
+    uint64_t shadow = 0;
+    uint64_t reflection = 0;
+    uint64_t refraction = 0;
+    uint64_t total_internal_reflections = 0;
+    uint64_t depth_cut = 0;         // paths stopped by the maximum depth
+    uint64_t contribution_cut = 0;  // paths stopped by the minimum-contribution threshold
+
+    uint64_t total_rays() const { return camera + shadow + reflection + refraction; }
+    RayCounters& operator+=(const RayCounters& o) {
+        camera += o.camera;
+        shadow += o.shadow;
+        reflection += o.reflection;
+        refraction += o.refraction;
+        total_internal_reflections += o.total_internal_reflections;
+        depth_cut += o.depth_cut;
+        contribution_cut += o.contribution_cut;
+        return *this;
+    }
+};
+
+}  // namespace rayo

@@ -1,0 +1,30 @@
+#pragma once
+// Phong materials (seed 000 eqs. [22]-[24], seed 003 eq. 2.1): per-channel ambient, diffuse and
+// specular coefficients, the specular exponent, and the Whitted transport weights.
+#include <string>
+
+#include "core/math.h"
+
+namespace rayo {
+
+enum class SpecularModel {
+    Phong,  // (V·R)^n, seed 000 eq. [24]
+    Blinn,  // (N·H)^n, seed 000 eq. [28]
+};
+
+struct Material {
+    std::string name;
+    Vec3 ka{0.1f};              // ambient, multiplies the scene's ambient light
+    Vec3 kd{0.8f};              // diffuse (Lambert)
+    Vec3 ks{0.0f};              // specular highlight
+    float shininess = 32.0f;    // exponent n
+    SpecularModel specular_model = SpecularModel::Phong;
+    Vec3 reflect{0.0f};         // perfect mirror weight, seed 001
+    Vec3 transmit{0.0f};        // perfect specular transmission weight, seed 001
+    float ior = 1.0f;           // index of refraction of the inside (outside is 1)
+
+    bool transmissive() const { return transmit.x > 0.0f || transmit.y > 0.0f || transmit.z > 0.0f; }
+    bool reflective() const { return reflect.x > 0.0f || reflect.y > 0.0f || reflect.z > 0.0f; }
+};
+
+}  // namespace rayo

@@ -1,0 +1,18 @@
+#pragma once
+// What the shaders need besides geometry: materials (indexed by the primitives' material ids),
+// lights, the ambient light Ia and the background colour.
+#include <vector>
+
+#include "shading/light.h"
+#include "shading/material.h"
+
+namespace rayo {
+
+struct ShadingScene {
+    std::vector<Material> materials;
+    std::vector<Light> lights;
+    Vec3 ambient_light{1.0f};  // Ia, seed 000 eq. [20]
+    Vec3 background{0.0f};
+};
+
+}  // namespace rayo
