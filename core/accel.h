@@ -3,6 +3,7 @@
 // cones as user geometry (our own intersection code) and the meshes as Embree triangles.
 // Follows the Embree 3 call order: device -> scene -> geometries -> commit, then trace.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <embree3/rtcore.h>
@@ -30,6 +31,8 @@ struct SurfaceHit {
     PrimitiveKind kind = PrimitiveKind::Sphere;
 };
 
+struct AccelUserData;
+
 class Accel {
 public:
     Accel(const Scene& scene, const AccelOptions& options = {});
@@ -54,6 +57,7 @@ private:
     AccelOptions m_options;
     RTCDevice m_device = nullptr;
     RTCScene m_rtc_scene = nullptr;
+    std::unique_ptr<AccelUserData> m_user_data;
     std::vector<GeometryRef> m_geometries;  // indexed by Embree geomID
     size_t m_primitive_count = 0;
 };

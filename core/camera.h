@@ -3,6 +3,7 @@
 // window in front of the eye; one ray goes through each pixel centre, pixel (0,0) top left.
 // Built for a right-handed world: camera +X is screen right, so the image is not mirrored.
 #include <optional>
+#include <string>
 
 #include "core/ray.h"
 

@@ -1,0 +1,325 @@
+#include "apps/cli.h"
+
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "apps/default_scene.h"
+#include "apps/renderer.h"
+#include "apps/scene_loader.h"
+#include "core/error.h"
+#include "core/image_output.h"
+#include "core/progress.h"
+
+namespace rayo {
+namespace {
+
+constexpr int kExitInput = 1;
+constexpr int kExitUsage = 2;
+constexpr int kMaxDepthLimit = 64;
+constexpr int kMaxSpp = 1 << 16;
+
+const char* const kUsage = R"(rayo — a Whitted ray tracer (Embree + TBB + OpenImageIO + OpenColorIO)
+
+usage:
+  rayo render [SCENE] [options]   render SCENE (.json or .nff); the built-in scene without one
+  rayo info SCENE                 load SCENE and print what it contains
+  rayo --help | --version
+
+render options:
+  -o, --output FILE        output image: .exr (linear float), .png, .tif, .jpg (display view)
+                           [default: SCENE's name with .png, or default.png]
+  --width W, --height H    resolution (one alone keeps the scene's aspect ratio)
+  --spp N                  samples per pixel, stratified jitter [scene's, default 1]
+  --threads N              worker threads [all cores]
+  --max-depth N            maximum reflection/refraction depth, 0..64 [scene's, default 5]
+  --tile-size N            tile side in pixels [16]
+  --sphere-math M          stable (default) or seed (seed 000's algebraic form)
+  --display D, --view V    OCIO display and view for PNG/TIFF/JPEG [config defaults]
+  --range R                clamp (default) or normalize (divide by the image maximum)
+  --half                   write EXR as half float
+  --quiet                  no progress bar and no summary line
+  --stats                  print the full statistics table
+
+The OCIO config is $OCIO when set, else rayo's own (sRGB display: sRGB, ACES 1.0 SDR-video, Raw).
+)";
+
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+int parse_int(const std::string& flag, const std::string& text, int min_value, int max_value) {
+    int value = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (ec != std::errc() || ptr != end || value < min_value || value > max_value) {
+        throw UsageError(flag + ": expected an integer in [" + std::to_string(min_value) + ", " +
+                         std::to_string(max_value) + "], got '" + text + "'");
+    }
+    return value;
+}
+
+struct RenderArgs {
+    std::optional<std::string> scene_path;
+    std::optional<std::string> output;
+    std::optional<int> width, height, spp, threads, max_depth, tile_size;
+    std::optional<SphereMath> sphere_math;
+    OutputOptions output_options;
+    bool quiet = false;
+    bool stats = false;
+};
+
+RenderArgs parse_render_args(const std::vector<std::string>& args) {
+    RenderArgs r;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) throw UsageError(a + ": missing value");
+            return args[++i];
+        };
+        if (a == "-o" || a == "--output") {
+            r.output = value();
+        } else if (a == "--width") {
+            r.width = parse_int(a, value(), 1, kMaxImageSide);
+        } else if (a == "--height") {
+            r.height = parse_int(a, value(), 1, kMaxImageSide);
+        } else if (a == "--spp") {
+            r.spp = parse_int(a, value(), 1, kMaxSpp);
+        } else if (a == "--threads") {
+            r.threads = parse_int(a, value(), 1, 4096);
+        } else if (a == "--max-depth") {
+            r.max_depth = parse_int(a, value(), 0, kMaxDepthLimit);
+        } else if (a == "--tile-size") {
+            r.tile_size = parse_int(a, value(), 1, 4096);
+        } else if (a == "--sphere-math") {
+            const std::string& m = value();
+            if (m == "stable") {
+                r.sphere_math = SphereMath::Stable;
+            } else if (m == "seed") {
+                r.sphere_math = SphereMath::Seed;
+            } else {
+                throw UsageError(a + ": expected 'stable' or 'seed', got '" + m + "'");
+            }
+        } else if (a == "--display") {
+            r.output_options.display = value();
+        } else if (a == "--view") {
+            r.output_options.view = value();
+        } else if (a == "--range") {
+            const std::string& m = value();
+            if (m == "clamp") {
+                r.output_options.range = RangeMode::Clamp;
+            } else if (m == "normalize") {
+                r.output_options.range = RangeMode::Normalize;
+            } else {
+                throw UsageError(a + ": expected 'clamp' or 'normalize', got '" + m + "'");
+            }
+        } else if (a == "--half") {
+            r.output_options.half_float_exr = true;
+        } else if (a == "--quiet" || a == "-q") {
+            r.quiet = true;
+        } else if (a == "--stats") {
+            r.stats = true;
+        } else if (!a.empty() && a[0] == '-') {
+            throw UsageError("unknown option '" + a + "' (see rayo --help)");
+        } else if (!r.scene_path) {
+            r.scene_path = a;
+        } else {
+            throw UsageError("unexpected argument '" + a + "': only one scene per render");
+        }
+    }
+    return r;
+}
+
+// Command-line values override the scene's. One of width/height alone keeps the aspect ratio.
+void apply_overrides(const RenderArgs& args, SceneDescription& d) {
+    CameraDesc& camera = d.scene.camera;
+    if (args.width && args.height) {
+        camera.width = *args.width;
+        camera.height = *args.height;
+    } else if (args.width || args.height) {
+        const double aspect = static_cast<double>(camera.width) / camera.height;
+        if (args.width) {
+            camera.width = *args.width;
+            camera.height = std::max(1, static_cast<int>(std::lround(*args.width / aspect)));
+        } else {
+            camera.height = *args.height;
+            camera.width = std::max(1, static_cast<int>(std::lround(*args.height * aspect)));
+        }
+    }
+    if (args.spp) d.settings.spp = *args.spp;
+    if (args.max_depth) d.settings.whitted.max_depth = *args.max_depth;
+    if (args.tile_size) d.settings.tile_size = *args.tile_size;
+    if (args.sphere_math) d.settings.sphere_math = *args.sphere_math;
+}
+
+std::string default_output_path(const RenderArgs& args) {
+    if (!args.scene_path) return "default.png";
+    return std::filesystem::path(*args.scene_path).stem().string() + ".png";
+}
+
+std::string human_count(double n) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(n >= 1e9 ? 2 : 1);
+    if (n >= 1e9) {
+        s << n / 1e9 << "G";
+    } else if (n >= 1e6) {
+        s << n / 1e6 << "M";
+    } else if (n >= 1e3) {
+        s << n / 1e3 << "k";
+    } else {
+        s << std::setprecision(0) << n;
+    }
+    return s.str();
+}
+
+void print_stats_table(std::ostream& out, const SceneDescription& d, const RenderResult& r,
+                       double parse_s, double write_s) {
+    const RayCounters& c = r.counters;
+    const double mrays = r.render_seconds > 0 ? c.total_rays() / r.render_seconds / 1e6 : 0.0;
+    out << "statistics\n"
+        << "  scene                       " << d.source << "\n"
+        << "  resolution                  " << d.scene.camera.width << "x" << d.scene.camera.height
+        << ", " << d.settings.spp << " spp, tile " << d.settings.tile_size << "\n"
+        << "  threads                     " << r.threads << "\n"
+        << "  sphere math                 "
+        << (d.settings.sphere_math == SphereMath::Seed ? "seed" : "stable") << "\n"
+        << "  primitives                  " << r.primitives << " (" << d.scene.spheres.size()
+        << " spheres, " << d.scene.cones.size() << " cones, " << d.scene.triangle_count()
+        << " triangles)\n"
+        << "  materials, lights           " << d.shading.materials.size() << ", "
+        << d.shading.lights.size() << "\n"
+        << "  max depth                   " << d.settings.whitted.max_depth << "\n"
+        << "  time parse                  " << format_duration(parse_s) << "\n"
+        << "  time BVH build              " << format_duration(r.bvh_seconds) << "\n"
+        << "  time render                 " << format_duration(r.render_seconds) << "\n"
+        << "  time write                  " << format_duration(write_s) << "\n"
+        << "  rays camera                 " << c.camera << "\n"
+        << "  rays shadow                 " << c.shadow << "\n"
+        << "  rays reflection             " << c.reflection << "\n"
+        << "  rays refraction             " << c.refraction << "\n"
+        << "  rays total                  " << c.total_rays() << "\n"
+        << "  total internal reflections  " << c.total_internal_reflections << "\n"
+        << "  paths cut by depth          " << c.depth_cut << "\n"
+        << "  paths cut by contribution   " << c.contribution_cut << "\n"
+        << "  throughput                  " << std::fixed << std::setprecision(2) << mrays
+        << " Mrays/s\n";
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int run_render(const std::vector<std::string>& arg_list, std::ostream& out) {
+    const RenderArgs args = parse_render_args(arg_list);
+    const auto total_start = std::chrono::steady_clock::now();
+    auto start = total_start;
+    SceneDescription d = args.scene_path ? load_scene_file(*args.scene_path) : make_default_scene();
+    const double parse_s = seconds_since(start);
+    apply_overrides(args, d);
+    const std::string output = args.output ? *args.output : default_output_path(args);
+
+    const bool progress = !args.quiet && ProgressReporter::stderr_is_terminal();
+    const RenderResult result = render_scene(d, args.threads.value_or(0), progress);
+
+    OutputOptions options = args.output_options;
+    const CameraDesc& cam = d.scene.camera;
+    std::ostringstream camera_text;
+    camera_text << "eye " << cam.eye.x << " " << cam.eye.y << " " << cam.eye.z << ", look_at "
+                << cam.look_at.x << " " << cam.look_at.y << " " << cam.look_at.z << ", up "
+                << cam.up.x << " " << cam.up.y << " " << cam.up.z;
+    options.metadata["rayo:scene"] = d.source;
+    options.metadata["rayo:camera"] = camera_text.str();
+    options.metadata["rayo:spp"] = std::to_string(d.settings.spp);
+    options.metadata["rayo:threads"] = std::to_string(result.threads);
+    options.metadata["rayo:render_seconds"] = std::to_string(result.render_seconds);
+    start = std::chrono::steady_clock::now();
+    write_image(result.film, output, options);
+    const double write_s = seconds_since(start);
+
+    if (args.stats) print_stats_table(out, d, result, parse_s, write_s);
+    if (!args.quiet) {
+        const RayCounters& c = result.counters;
+        const double mrays =
+            result.render_seconds > 0 ? c.total_rays() / result.render_seconds / 1e6 : 0.0;
+        out << "rayo: " << output << " " << cam.width << "x" << cam.height << " "
+            << d.settings.spp << "spp " << result.threads << " threads | parse "
+            << format_duration(parse_s) << ", bvh " << format_duration(result.bvh_seconds)
+            << ", render " << format_duration(result.render_seconds) << ", write "
+            << format_duration(write_s) << " | rays " << human_count(c.total_rays())
+            << " (camera " << human_count(c.camera) << ", shadow " << human_count(c.shadow)
+            << ", reflect " << human_count(c.reflection) << ", refract "
+            << human_count(c.refraction) << ") " << std::fixed << std::setprecision(2) << mrays
+            << " Mrays/s | total " << format_duration(seconds_since(total_start)) << "\n";
+    }
+    return 0;
+}
+
+int run_info(const std::vector<std::string>& args, std::ostream& out) {
+    if (args.size() != 1) throw UsageError("info: expected exactly one scene file");
+    const SceneDescription d = load_scene_file(args[0]);
+    const Camera camera = Camera::create(d.scene.camera, d.source + "#/camera");
+    out << "scene " << d.source << "\n"
+        << "resolution " << camera.width() << "x" << camera.height() << "\n"
+        << "fov " << camera.hfov_degrees() << "x" << camera.vfov_degrees() << " degrees\n"
+        << "spheres " << d.scene.spheres.size() << "\n"
+        << "cones " << d.scene.cones.size() << "\n"
+        << "meshes " << d.scene.meshes.size() << "\n"
+        << "triangles " << d.scene.triangle_count() << "\n"
+        << "materials " << d.shading.materials.size() << "\n"
+        << "lights " << d.shading.lights.size() << "\n";
+    return 0;
+}
+
+}  // namespace
+
+int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    try {
+        if (args.empty()) {
+            err << kUsage;
+            return kExitUsage;
+        }
+        const std::string command = args[0];
+        args.erase(args.begin());
+        if (command == "--help" || command == "-h" || command == "help") {
+            out << kUsage;
+            return 0;
+        }
+        if (command == "--version") {
+            out << "rayo " << RAYO_VERSION << "\n";
+            return 0;
+        }
+        for (const std::string& a : args) {
+            if (a == "--help" || a == "-h") {
+                out << kUsage;
+                return 0;
+            }
+        }
+        if (command == "render") return run_render(args, out);
+        if (command == "info") return run_info(args, out);
+        throw UsageError("unknown command '" + command + "' (see rayo --help)");
+    } catch (const UsageError& e) {
+        err << "rayo: error: " << e.what() << "\n";
+        return kExitUsage;
+    } catch (const InputError& e) {
+        err << "rayo: error: " << e.what() << "\n";
+        return kExitInput;
+    } catch (const std::bad_alloc&) {
+        err << "rayo: error: out of memory\n";
+        return kExitInput;
+    } catch (const std::exception& e) {
+        err << "rayo: error: " << e.what() << "\n";
+        return kExitInput;
+    }
+}
+
+}  // namespace rayo

@@ -1,0 +1,56 @@
+#include "apps/renderer.h"
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <chrono>
+#include <memory>
+
+#include "core/accel.h"
+#include "core/camera.h"
+#include "core/render.h"
+#include "shading/whitted.h"
+
+namespace rayo {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+int default_thread_count() { return tbb::info::default_concurrency(); }
+
+RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress) {
+    const Camera camera = Camera::create(description.scene.camera, description.source + "#/camera");
+    RenderResult result;
+    result.threads = threads > 0 ? threads : default_thread_count();
+    // Limits TBB and Embree's BVH build alike (DESIGN.md: no task_scheduler_init in oneTBB).
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                              static_cast<size_t>(result.threads));
+
+    auto start = std::chrono::steady_clock::now();
+    AccelOptions accel_options;
+    accel_options.sphere_math = description.settings.sphere_math;
+    const Accel accel(description.scene, accel_options);
+    result.bvh_seconds = seconds_since(start);
+    result.primitives = accel.primitive_count();
+
+    const WhittedIntegrator integrator(accel, description.shading, description.settings.whitted);
+    result.film = Film(camera.width(), camera.height());
+    TileSettings tiles;
+    tiles.spp = description.settings.spp;
+    tiles.tile_size = description.settings.tile_size;
+
+    start = std::chrono::steady_clock::now();
+    {
+        ProgressReporter progress(static_cast<uint64_t>(camera.width()) * camera.height(),
+                                  "rendering", show_progress);
+        result.counters = render_tiles(camera, integrator, tiles, result.film, &progress);
+    }
+    result.render_seconds = seconds_since(start);
+    return result;
+}
+
+}  // namespace rayo

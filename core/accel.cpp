@@ -1,0 +1,361 @@
+#include "core/accel.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace rayo {
+namespace {
+
+struct SphereGeometryData {
+    const Sphere* spheres;
+    SphereMath math;
+};
+
+struct ConeGeometryData {
+    const Cone* cones;
+};
+
+struct MeshGeometryData {
+    const TriangleMesh* mesh;
+};
+
+}  // namespace
+
+// The callbacks' user data, allocated once per Accel (Embree keeps raw pointers to it).
+struct AccelUserData {
+    SphereGeometryData spheres{};
+    ConeGeometryData cones{};
+    std::vector<MeshGeometryData> meshes;  // sized once: pointers into it stay valid
+};
+
+namespace {
+
+Vec3 triangle_normal(const TriangleMesh& mesh, uint32_t prim) {
+    const auto& tri = mesh.triangles[prim];
+    const Vec3& p0 = mesh.positions[tri[0]];
+    // Right-handed: counter-clockwise vertices seen from the side the normal points to.
+    return glm::cross(mesh.positions[tri[1]] - p0, mesh.positions[tri[2]] - p0);
+}
+
+void fail_on_embree_error(RTCDevice device, const char* what) {
+    const RTCError error = rtcGetDeviceError(device);
+    if (error != RTC_ERROR_NONE) {
+        throw std::runtime_error(std::string("Embree error ") + std::to_string(error) + " in " +
+                                 what);
+    }
+}
+
+// --- user geometry callbacks: written for any N (rtcIntersect1 calls them with N = 1, packets
+// and streams with 4/8/16); per-lane data through the RTCRayN_/RTCHitN_ accessors (DESIGN.md).
+
+void sphere_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* data = static_cast<const SphereGeometryData*>(args->geometryUserPtr);
+    const Sphere& s = data->spheres[args->primID];
+    RTCBounds* b = args->bounds_o;
+    b->lower_x = s.center.x - s.radius;
+    b->lower_y = s.center.y - s.radius;
+    b->lower_z = s.center.z - s.radius;
+    b->upper_x = s.center.x + s.radius;
+    b->upper_y = s.center.y + s.radius;
+    b->upper_z = s.center.z + s.radius;
+}
+
+template <typename RayN>
+void read_ray(RayN* ray, unsigned n, unsigned i, Vec3& origin, Vec3& direction) {
+    origin = Vec3(RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i));
+    direction = Vec3(RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i), RTCRayN_dir_z(ray, n, i));
+}
+
+void report_hit(RTCRayN* ray, RTCHitN* hit, unsigned n, unsigned i, float t, const Vec3& normal,
+                unsigned geom_id, unsigned prim_id, const RTCIntersectContext* context) {
+    RTCRayN_tfar(ray, n, i) = t;
+    RTCHitN_Ng_x(hit, n, i) = normal.x;
+    RTCHitN_Ng_y(hit, n, i) = normal.y;
+    RTCHitN_Ng_z(hit, n, i) = normal.z;
+    RTCHitN_u(hit, n, i) = 0.0f;
+    RTCHitN_v(hit, n, i) = 0.0f;
+    RTCHitN_primID(hit, n, i) = prim_id;
+    RTCHitN_geomID(hit, n, i) = geom_id;
+    RTCHitN_instID(hit, n, i, 0) = context->instID[0];
+}
+
+void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
+    const auto* data = static_cast<const SphereGeometryData*>(args->geometryUserPtr);
+    const Sphere& s = data->spheres[args->primID];
+    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
+    RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        Vec3 origin, direction;
+        read_ray(ray, args->N, i, origin, direction);
+        float t;
+        bool far_root;
+        if (intersect_sphere(data->math, origin, direction, s.center, s.radius,
+                             RTCRayN_tnear(ray, args->N, i), RTCRayN_tfar(ray, args->N, i), t,
+                             far_root)) {
+            // Outward normal; the integrator tells inside from outside by its sign against
+            // the ray (equivalent to seed 000's flip for far-root hits).
+            report_hit(ray, hit, args->N, i, t, origin + t * direction - s.center, args->geomID,
+                       args->primID, args->context);
+        }
+    }
+}
+
+void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
+    const auto* data = static_cast<const SphereGeometryData*>(args->geometryUserPtr);
+    const Sphere& s = data->spheres[args->primID];
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        Vec3 origin, direction;
+        read_ray(args->ray, args->N, i, origin, direction);
+        float t;
+        bool far_root;
+        if (intersect_sphere(data->math, origin, direction, s.center, s.radius,
+                             RTCRayN_tnear(args->ray, args->N, i),
+                             RTCRayN_tfar(args->ray, args->N, i), t, far_root)) {
+            RTCRayN_tfar(args->ray, args->N, i) = -std::numeric_limits<float>::infinity();
+        }
+    }
+}
+
+void cone_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* data = static_cast<const ConeGeometryData*>(args->geometryUserPtr);
+    const Cone& c = data->cones[args->primID];
+    // Conservative: the box around both end spheres.
+    const Vec3 lower = glm::min(c.base - Vec3(c.base_radius), c.apex - Vec3(c.apex_radius));
+    const Vec3 upper = glm::max(c.base + Vec3(c.base_radius), c.apex + Vec3(c.apex_radius));
+    RTCBounds* b = args->bounds_o;
+    b->lower_x = lower.x;
+    b->lower_y = lower.y;
+    b->lower_z = lower.z;
+    b->upper_x = upper.x;
+    b->upper_y = upper.y;
+    b->upper_z = upper.z;
+}
+
+void cone_intersect(const RTCIntersectFunctionNArguments* args) {
+    const auto* data = static_cast<const ConeGeometryData*>(args->geometryUserPtr);
+    const Cone& c = data->cones[args->primID];
+    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
+    RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        Vec3 origin, direction, normal;
+        read_ray(ray, args->N, i, origin, direction);
+        float t;
+        if (intersect_cone(c, origin, direction, RTCRayN_tnear(ray, args->N, i),
+                           RTCRayN_tfar(ray, args->N, i), t, normal)) {
+            report_hit(ray, hit, args->N, i, t, normal, args->geomID, args->primID,
+                       args->context);
+        }
+    }
+}
+
+void cone_occluded(const RTCOccludedFunctionNArguments* args) {
+    const auto* data = static_cast<const ConeGeometryData*>(args->geometryUserPtr);
+    const Cone& c = data->cones[args->primID];
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        Vec3 origin, direction, normal;
+        read_ray(args->ray, args->N, i, origin, direction);
+        float t;
+        if (intersect_cone(c, origin, direction, RTCRayN_tnear(args->ray, args->N, i),
+                           RTCRayN_tfar(args->ray, args->N, i), t, normal)) {
+            RTCRayN_tfar(args->ray, args->N, i) = -std::numeric_limits<float>::infinity();
+        }
+    }
+}
+
+// One-sided meshes: reject hits on the back of a triangle (NFF polygons, DESIGN.md).
+void cull_back_faces(const RTCFilterFunctionNArguments* args) {
+    const auto* data = static_cast<const MeshGeometryData*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        const Vec3 direction(RTCRayN_dir_x(args->ray, args->N, i),
+                             RTCRayN_dir_y(args->ray, args->N, i),
+                             RTCRayN_dir_z(args->ray, args->N, i));
+        const uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
+        if (glm::dot(triangle_normal(*data->mesh, prim), direction) >= 0.0f) args->valid[i] = 0;
+    }
+}
+
+RTCRay make_rtc_ray(const Ray& ray) {
+    RTCRay r;
+    r.org_x = ray.origin.x;
+    r.org_y = ray.origin.y;
+    r.org_z = ray.origin.z;
+    r.dir_x = ray.direction.x;
+    r.dir_y = ray.direction.y;
+    r.dir_z = ray.direction.z;
+    r.tnear = ray.tnear;
+    r.tfar = ray.tfar;
+    r.time = 0.0f;
+    r.mask = 0xFFFFFFFFu;  // Debian's Embree has ray masks on: mask 0 would hit nothing
+    r.id = 0;
+    r.flags = 0;
+    return r;
+}
+
+}  // namespace
+
+Accel::Accel(const Scene& scene, const AccelOptions& options)
+    : m_scene(scene), m_options(options) {
+    m_device = rtcNewDevice(nullptr);
+    if (!m_device) throw std::runtime_error("Embree: cannot create a device");
+    m_rtc_scene = rtcNewScene(m_device);
+    rtcSetSceneFlags(m_rtc_scene, options.robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
+    rtcSetSceneBuildQuality(m_rtc_scene, RTC_BUILD_QUALITY_HIGH);
+
+    m_user_data = std::make_unique<AccelUserData>();
+    m_user_data->meshes.resize(scene.meshes.size());
+    auto attach = [&](RTCGeometry geometry, PrimitiveKind kind, uint32_t index) {
+        rtcCommitGeometry(geometry);
+        const unsigned id = rtcAttachGeometry(m_rtc_scene, geometry);
+        rtcReleaseGeometry(geometry);
+        if (id >= m_geometries.size()) m_geometries.resize(id + 1);
+        m_geometries[id] = GeometryRef{kind, index};
+    };
+
+    if (!scene.spheres.empty()) {
+        SphereGeometryData* data = &m_user_data->spheres;
+        *data = SphereGeometryData{scene.spheres.data(), options.sphere_math};
+        RTCGeometry g = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(g, static_cast<unsigned>(scene.spheres.size()));
+        rtcSetGeometryUserData(g, data);  // Embree 3 ignores the bounds function's own pointer
+        rtcSetGeometryBoundsFunction(g, sphere_bounds, nullptr);
+        rtcSetGeometryIntersectFunction(g, sphere_intersect);
+        rtcSetGeometryOccludedFunction(g, sphere_occluded);
+        attach(g, PrimitiveKind::Sphere, 0);
+        m_primitive_count += scene.spheres.size();
+    }
+    if (!scene.cones.empty()) {
+        ConeGeometryData* data = &m_user_data->cones;
+        data->cones = scene.cones.data();
+        RTCGeometry g = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(g, static_cast<unsigned>(scene.cones.size()));
+        rtcSetGeometryUserData(g, data);
+        rtcSetGeometryBoundsFunction(g, cone_bounds, nullptr);
+        rtcSetGeometryIntersectFunction(g, cone_intersect);
+        rtcSetGeometryOccludedFunction(g, cone_occluded);
+        attach(g, PrimitiveKind::Cone, 0);
+        m_primitive_count += scene.cones.size();
+    }
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const TriangleMesh& mesh = scene.meshes[m];
+        if (mesh.triangles.empty()) continue;
+        RTCGeometry g = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        // Copies into Embree-owned buffers: Embree reads vertices as 16 bytes, so a shared
+        // std::vector<Vec3> would be over-read at its end.
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(float) * 3,
+            mesh.positions.size()));
+        for (size_t v = 0; v < mesh.positions.size(); ++v) {
+            vertices[3 * v + 0] = mesh.positions[v].x;
+            vertices[3 * v + 1] = mesh.positions[v].y;
+            vertices[3 * v + 2] = mesh.positions[v].z;
+        }
+        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(unsigned) * 3,
+            mesh.triangles.size()));
+        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+            indices[3 * t + 0] = mesh.triangles[t][0];
+            indices[3 * t + 1] = mesh.triangles[t][1];
+            indices[3 * t + 2] = mesh.triangles[t][2];
+        }
+        if (mesh.one_sided) {
+            m_user_data->meshes[m].mesh = &mesh;
+            rtcSetGeometryUserData(g, &m_user_data->meshes[m]);
+            rtcSetGeometryIntersectFilterFunction(g, cull_back_faces);
+            rtcSetGeometryOccludedFilterFunction(g, cull_back_faces);
+        }
+        attach(g, PrimitiveKind::Triangle, static_cast<uint32_t>(m));
+        m_primitive_count += mesh.triangles.size();
+    }
+    rtcCommitScene(m_rtc_scene);
+    fail_on_embree_error(m_device, "scene commit");
+}
+
+Accel::~Accel() {
+    if (m_rtc_scene) rtcReleaseScene(m_rtc_scene);
+    if (m_device) rtcReleaseDevice(m_device);
+}
+
+bool Accel::intersect(const Ray& ray, SurfaceHit& hit) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rayhit;
+    rayhit.ray = make_rtc_ray(ray);
+    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(m_rtc_scene, &context, &rayhit);
+    if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+
+    const float t = rayhit.ray.tfar;
+    const uint32_t prim = rayhit.hit.primID;
+    const GeometryRef& ref = m_geometries[rayhit.hit.geomID];
+    hit.t = t;
+    hit.kind = ref.kind;
+    switch (ref.kind) {
+        case PrimitiveKind::Sphere: {
+            const Sphere& s = m_scene.spheres[prim];
+            // Re-project the hit point onto the sphere (DESIGN.md "Numerics").
+            const Vec3 outward = glm::normalize(ray.at(t) - s.center);
+            hit.position = s.center + s.radius * outward;
+            hit.geometric_normal = outward;
+            hit.shading_normal = outward;
+            hit.object_size = s.radius;
+            hit.material = s.material;
+            break;
+        }
+        case PrimitiveKind::Cone: {
+            const Cone& c = m_scene.cones[prim];
+            hit.position = ray.at(t);
+            hit.geometric_normal = glm::normalize(
+                Vec3(rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z));
+            hit.shading_normal = hit.geometric_normal;
+            hit.object_size = glm::max(glm::length(c.apex - c.base),
+                                       glm::max(c.base_radius, c.apex_radius));
+            hit.material = c.material;
+            break;
+        }
+        case PrimitiveKind::Triangle: {
+            const TriangleMesh& mesh = m_scene.meshes[ref.index];
+            const auto& tri = mesh.triangles[prim];
+            const Vec3 ng = triangle_normal(mesh, prim);
+            hit.position = ray.at(t);
+            hit.geometric_normal = glm::normalize(ng);
+            hit.shading_normal = hit.geometric_normal;
+            if (!mesh.normals.empty()) {
+                const float u = rayhit.hit.u, v = rayhit.hit.v;
+                const Vec3 n = (1.0f - u - v) * mesh.normals[tri[0]] + u * mesh.normals[tri[1]] +
+                               v * mesh.normals[tri[2]];
+                const float length = glm::length(n);
+                if (length > 0.0f) {
+                    // Keep the interpolated normal on the geometric normal's side.
+                    const Vec3 unit = n / length;
+                    hit.shading_normal =
+                        glm::dot(unit, hit.geometric_normal) >= 0.0f ? unit : -unit;
+                }
+            }
+            const Vec3& p0 = mesh.positions[tri[0]];
+            hit.object_size = glm::max(glm::length(mesh.positions[tri[1]] - p0),
+                                       glm::length(mesh.positions[tri[2]] - p0));
+            hit.material = mesh.materials[prim];
+            break;
+        }
+    }
+    return true;
+}
+
+bool Accel::occluded(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay r = make_rtc_ray(ray);
+    rtcOccluded1(m_rtc_scene, &context, &r);
+    return r.tfar < 0.0f;
+}
+
+}  // namespace rayo

@@ -1,0 +1,128 @@
+#include "shading/whitted.h"
+
+#include <limits>
+
+#include "shading/optics.h"
+#include "shading/phong.h"
+
+namespace rayo {
+namespace {
+
+float max_component(const Vec3& v) { return glm::max(v.x, glm::max(v.y, v.z)); }
+
+}  // namespace
+
+Vec3 offset_ray_origin(const SurfaceHit& hit, const Vec3& side_normal) {
+    // eps = max(|P|∞, t, size)·k: about 80 float ulps of the largest magnitude involved, so the
+    // new ray cannot re-hit the surface it leaves however far from the origin it lies.
+    constexpr float kRelativeOffset = 1e-5f;
+    const float scale = glm::max(max_abs_component(hit.position), glm::max(hit.t, hit.object_size));
+    return hit.position + (kRelativeOffset * glm::max(scale, 1e-3f)) * side_normal;
+}
+
+Vec3 WhittedIntegrator::radiance(const Ray& ray, RayCounters& counters) const {
+    ++counters.camera;
+    return trace(ray, 0, Vec3(1.0f), counters);
+}
+
+Vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const Vec3& weight,
+                              RayCounters& counters) const {
+    SurfaceHit hit;
+    if (!m_accel.intersect(ray, hit)) return m_scene.background;
+    return shade(ray, hit, depth, weight, counters);
+}
+
+Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth,
+                              const Vec3& weight, RayCounters& counters) const {
+    const Material& material = m_scene.materials[hit.material];
+    // Which side the ray arrived on: seed 000 flips the normal for hits from inside (t1).
+    const bool entering = glm::dot(ray.direction, hit.geometric_normal) < 0.0f;
+    const Vec3 facing_geometric = entering ? hit.geometric_normal : -hit.geometric_normal;
+    const Vec3 normal = entering ? hit.shading_normal : -hit.shading_normal;
+    const Vec3 to_eye = -ray.direction;
+
+    // Local model, seed 003 eq. 2.1: I = ka·Ia + Σ f(d)·Il·[kd(n·l) + ks(…)^n], with a shadow ray
+    // per light (seed 004).
+    Vec3 color = material.ka * m_scene.ambient_light;
+    const Vec3 shadow_origin = offset_ray_origin(hit, facing_geometric);
+    for (const Light& light : m_scene.lights) {
+        Vec3 to_light;
+        float light_distance;
+        Vec3 light_radiance;
+        if (const auto* point = std::get_if<PointLight>(&light)) {
+            const Vec3 offset = point->position - hit.position;
+            light_distance = glm::length(offset);
+            if (!(light_distance > 0.0f)) continue;
+            to_light = offset / light_distance;
+            light_radiance =
+                point->color * point->intensity * point->attenuation.factor(light_distance);
+        } else {
+            const auto& directional = std::get<DirectionalLight>(light);
+            to_light = -directional.direction;
+            light_distance = std::numeric_limits<float>::infinity();
+            light_radiance = directional.color * directional.intensity;
+        }
+        // Lights behind the surface (as seen from the arriving side) contribute nothing.
+        if (glm::dot(normal, to_light) <= 0.0f || glm::dot(facing_geometric, to_light) <= 0.0f) {
+            continue;
+        }
+        Ray shadow;
+        shadow.origin = shadow_origin;
+        shadow.direction = to_light;
+        shadow.tnear = 0.0f;
+        shadow.tfar = std::isfinite(light_distance)
+                          ? glm::length(hit.position + light_distance * to_light - shadow_origin) *
+                                (1.0f - 1e-5f)
+                          : std::numeric_limits<float>::infinity();
+        ++counters.shadow;
+        if (m_accel.occluded(shadow)) continue;
+        color += phong_direct(material, normal, to_light, to_eye, light_radiance);
+    }
+
+    if (!material.reflective() && !material.transmissive()) return color;
+    if (depth >= m_settings.max_depth) {
+        ++counters.depth_cut;
+        return color;
+    }
+
+    // seed 001: perfect specular reflection R = I − 2(I·N)N, and Snell transmission; total
+    // internal reflection sends the transmitted weight into the reflected ray.
+    Vec3 reflect_weight = material.reflect;
+    Vec3 transmit_color(0.0f);
+    if (material.transmissive()) {
+        const float n21 = entering ? material.ior : 1.0f / material.ior;
+        const std::optional<Vec3> refracted = refract(ray.direction, normal, n21);
+        if (refracted) {
+            const Vec3 child_weight = weight * material.transmit;
+            if (max_component(child_weight) >= m_settings.min_contribution) {
+                Ray child;
+                child.origin = offset_ray_origin(hit, -facing_geometric);
+                child.direction = glm::normalize(*refracted);
+                ++counters.refraction;
+                transmit_color =
+                    material.transmit * trace(child, depth + 1, child_weight, counters);
+            } else {
+                ++counters.contribution_cut;
+            }
+        } else {
+            ++counters.total_internal_reflections;
+            reflect_weight += material.transmit;
+        }
+    }
+    Vec3 reflect_color(0.0f);
+    if (max_component(reflect_weight) > 0.0f) {
+        const Vec3 child_weight = weight * reflect_weight;
+        if (max_component(child_weight) >= m_settings.min_contribution) {
+            Ray child;
+            child.origin = shadow_origin;
+            child.direction = glm::normalize(reflect(ray.direction, normal));
+            ++counters.reflection;
+            reflect_color = reflect_weight * trace(child, depth + 1, child_weight, counters);
+        } else {
+            ++counters.contribution_cut;
+        }
+    }
+    return color + reflect_color + transmit_color;
+}
+
+}  // namespace rayo
