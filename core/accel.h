@@ -45,6 +45,7 @@ public:
     bool occluded(const Ray& ray) const;
 
     const AccelOptions& options() const { return m_options; }
+    RTCScene rtc_scene() const { return m_rtc_scene; }  // for raw-Embree baselines
     size_t primitive_count() const { return m_primitive_count; }
 
 private:
