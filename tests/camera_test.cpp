@@ -1,0 +1,344 @@
+// Tests of the seed 002 window camera (core/camera.h): pixel-centre rays, orientation in a
+// right-handed world, field-of-view variants, the NFF fov convention and input validation.
+#include "core/camera.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.h"
+
+namespace rayo {
+namespace {
+
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+
+// Eye on +z looking at the origin with +y up: the default right-handed set-up.
+CameraDesc front_camera(int width, int height) {
+    CameraDesc desc;
+    desc.eye = Vec3(0.0f, 0.0f, 5.0f);
+    desc.look_at = Vec3(0.0f);
+    desc.up = Vec3(0.0f, 1.0f, 0.0f);
+    desc.width = width;
+    desc.height = height;
+    return desc;
+}
+
+double angle_degrees(const Vec3& a, const Vec3& b) {
+    const DVec3 da = glm::normalize(DVec3(a)), db = glm::normalize(DVec3(b));
+    return std::acos(glm::clamp(glm::dot(da, db), -1.0, 1.0)) / kDegree;
+}
+
+// Where the ray through (px, py) meets the window plane, in units of the distance: the window
+// coordinates of seed 002 (ORIGIN + i·hpixel·HORZ − j·vpixel·VERT relative to CENTER).
+Vec3 on_window(const Camera& camera, float px, float py) {
+    const Ray ray = camera.generate_ray(px, py);
+    return ray.direction / glm::dot(ray.direction, camera.view());
+}
+
+void expect_vec_near(const Vec3& actual, const Vec3& expected, float tolerance) {
+    EXPECT_NEAR(actual.x, expected.x, tolerance);
+    EXPECT_NEAR(actual.y, expected.y, tolerance);
+    EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+TEST(Camera, CentrePixelOfOddImageLooksAlongTheViewDirection) {
+    CameraDesc desc = front_camera(3, 3);
+    desc.hfov_degrees = 90.0f;
+    const Camera camera = Camera::create(desc);
+    const Ray ray = camera.generate_ray(1.0f, 1.0f);
+    // seed 002: VIEW = (LOOKAT − EYE)/|…| = (0,0,−1); the centre pixel's ray passes CENTER.
+    expect_vec_near(ray.direction, Vec3(0.0f, 0.0f, -1.0f), 1e-6f);
+    expect_vec_near(ray.origin, desc.eye, 0.0f);
+    expect_vec_near(camera.view(), Vec3(0.0f, 0.0f, -1.0f), 1e-6f);
+}
+
+TEST(Camera, TopLeftPixelHasPositiveUpAndNegativeRightComponents) {
+    CameraDesc desc = front_camera(3, 3);
+    desc.hfov_degrees = 90.0f;
+    const Camera camera = Camera::create(desc);
+    const Ray ray = camera.generate_ray(0.0f, 0.0f);
+    EXPECT_GT(glm::dot(ray.direction, camera.up()), 0.0f);
+    EXPECT_LT(glm::dot(ray.direction, camera.right()), 0.0f);
+    // seed 002 with dis = 1, hfov = 90°: hsize = 2·tan 45° = 2, hpixel = vpixel = 2/3, so pixel
+    // (0,0) sits at CENTER − (2/3)·HORZ + (2/3)·VERT = (−2/3, 2/3, −1) from the eye; normalised
+    // by √(17)/3 that is (−2, 2, −3)/√17.
+    const float s = 1.0f / std::sqrt(17.0f);
+    expect_vec_near(ray.direction, Vec3(-2.0f * s, 2.0f * s, -3.0f * s), 1e-6f);
+    // Bottom-right is the mirror image through the view axis.
+    expect_vec_near(camera.generate_ray(2.0f, 2.0f).direction, Vec3(2.0f * s, -2.0f * s, -3.0f * s),
+                    1e-6f);
+}
+
+TEST(Camera, RightHandedWorldIsNotMirrored) {
+    CameraDesc desc = front_camera(64, 48);
+    desc.hfov_degrees = 60.0f;
+    const Camera camera = Camera::create(desc);
+    // Eye on +z looking at −z with +y up: screen right must be world +x (x = y × z would give
+    // the seed's left-handed, mirrored frame, −x).
+    expect_vec_near(camera.right(), Vec3(1.0f, 0.0f, 0.0f), 1e-6f);
+    expect_vec_near(camera.up(), Vec3(0.0f, 1.0f, 0.0f), 1e-6f);
+    // Pixel columns grow toward +x, rows toward −y.
+    EXPECT_GT(camera.generate_ray(63.0f, 24.0f).direction.x, 0.0f);
+    EXPECT_LT(camera.generate_ray(0.0f, 24.0f).direction.x, 0.0f);
+    EXPECT_GT(camera.generate_ray(32.0f, 0.0f).direction.y, 0.0f);
+    EXPECT_LT(camera.generate_ray(32.0f, 47.0f).direction.y, 0.0f);
+}
+
+// The pixel whose centre ray points closest to `target`.
+void closest_pixel(const Camera& camera, const Vec3& target, int& best_i, int& best_j) {
+    double best = -2.0;
+    for (int j = 0; j < camera.height(); ++j) {
+        for (int i = 0; i < camera.width(); ++i) {
+            const Ray ray = camera.generate_ray(float(i), float(j));
+            const double c =
+                glm::dot(DVec3(ray.direction), glm::normalize(DVec3(target - ray.origin)));
+            if (c > best) {
+                best = c;
+                best_i = i;
+                best_j = j;
+            }
+        }
+    }
+}
+
+TEST(Camera, PointsProjectIntoTheMatchingHalfOfTheImage) {
+    // A general view (eye off-axis, look-at not the origin) so the test does not rely on the
+    // frame being axis-aligned.
+    CameraDesc desc;
+    desc.eye = Vec3(3.0f, 2.0f, 7.0f);
+    desc.look_at = Vec3(-1.0f, 0.5f, 0.0f);
+    desc.up = Vec3(0.0f, 1.0f, 0.0f);
+    desc.width = 41;
+    desc.height = 31;
+    desc.hfov_degrees = 50.0f;
+    const Camera camera = Camera::create(desc);
+    const Vec3 right = camera.right(), up = camera.up();
+    int i = -1, j = -1;
+    closest_pixel(camera, desc.look_at + 1.0f * right, i, j);
+    EXPECT_GT(i, 20);  // right of the centre column (20)
+    EXPECT_EQ(j, 15);  // on the centre row
+    closest_pixel(camera, desc.look_at - 1.0f * right, i, j);
+    EXPECT_LT(i, 20);
+    EXPECT_EQ(j, 15);
+    closest_pixel(camera, desc.look_at + 1.0f * up, i, j);
+    EXPECT_EQ(i, 20);
+    EXPECT_LT(j, 15);  // rows count downwards: above the centre is a smaller j
+    closest_pixel(camera, desc.look_at, i, j);
+    EXPECT_EQ(i, 20);
+    EXPECT_EQ(j, 15);
+    // Right-handed: right × up = −view (camera looks down its −z).
+    expect_vec_near(glm::cross(right, up), -camera.view(), 1e-6f);
+}
+
+TEST(Camera, HfovOnlyGivesSquarePixels) {
+    CameraDesc desc = front_camera(200, 100);
+    desc.hfov_degrees = 60.0f;
+    const Camera camera = Camera::create(desc);
+    const Vec3 o = on_window(camera, 10.0f, 10.0f);
+    const float step_x = glm::length(on_window(camera, 11.0f, 10.0f) - o);
+    const float step_y = glm::length(on_window(camera, 10.0f, 11.0f) - o);
+    // hpixel = 2·tan 30°/200 (seed 002) and vpixel = hpixel.
+    const float hpixel = 2.0f * std::tan(30.0f * float(kDegree)) / 200.0f;
+    EXPECT_NEAR(step_x, hpixel, 1e-6f);
+    EXPECT_NEAR(step_y, hpixel, 1e-6f);
+    EXPECT_NEAR(camera.hfov_degrees(), 60.0f, 1e-4f);
+    // vfov from the aspect ratio: 2·atan(tan 30° · 100/200) = 32.2042°.
+    EXPECT_NEAR(camera.vfov_degrees(), 2.0 * std::atan(std::tan(30.0 * kDegree) / 2.0) / kDegree,
+                1e-4);
+    EXPECT_NEAR(camera.vfov_degrees(), 32.2042f, 1e-3f);
+}
+
+TEST(Camera, VfovOnlyGivesSquarePixels) {
+    CameraDesc desc = front_camera(200, 100);
+    desc.vfov_degrees = 40.0f;
+    const Camera camera = Camera::create(desc);
+    const Vec3 o = on_window(camera, 150.0f, 70.0f);
+    const float step_x = glm::length(on_window(camera, 151.0f, 70.0f) - o);
+    const float step_y = glm::length(on_window(camera, 150.0f, 71.0f) - o);
+    const float vpixel = 2.0f * std::tan(20.0f * float(kDegree)) / 100.0f;
+    EXPECT_NEAR(step_x, vpixel, 1e-6f);
+    EXPECT_NEAR(step_y, vpixel, 1e-6f);
+    EXPECT_NEAR(camera.vfov_degrees(), 40.0f, 1e-4f);
+    // hfov = 2·atan(2·tan 20°) = 72.1048°.
+    EXPECT_NEAR(camera.hfov_degrees(), 72.1048f, 1e-3f);
+    // The image edges: the ray through the middle of the top edge makes vfov/2 with the view.
+    EXPECT_NEAR(angle_degrees(camera.generate_ray(99.5f, -0.5f).direction, camera.view()), 20.0,
+                1e-3);
+}
+
+TEST(Camera, BothFovsGivenAreHonouredIndependently) {
+    CameraDesc desc = front_camera(4, 3);
+    desc.hfov_degrees = 90.0f;
+    desc.vfov_degrees = 60.0f;
+    desc.distance = 2.5f;  // the field of view does not depend on dis
+    const Camera camera = Camera::create(desc);
+    EXPECT_NEAR(camera.hfov_degrees(), 90.0f, 1e-4f);
+    EXPECT_NEAR(camera.vfov_degrees(), 60.0f, 1e-4f);
+    // Edges of the image: left edge middle (px = −0.5, py = 1) is 45° off the view direction,
+    // top edge middle (px = 1.5, py = −0.5) is 30° off it.
+    EXPECT_NEAR(angle_degrees(camera.generate_ray(-0.5f, 1.0f).direction, camera.view()), 45.0,
+                1e-3);
+    EXPECT_NEAR(angle_degrees(camera.generate_ray(1.5f, -0.5f).direction, camera.view()), 30.0,
+                1e-3);
+    // Non-square pixels: hpixel = 2·tan 45°/4 = 0.5, vpixel = 2·tan 30°/3 = 0.3849 (per unit dis).
+    const Vec3 o = on_window(camera, 1.0f, 1.0f);
+    EXPECT_NEAR(glm::length(on_window(camera, 2.0f, 1.0f) - o), 0.5f, 1e-5f);
+    EXPECT_NEAR(glm::length(on_window(camera, 1.0f, 2.0f) - o),
+                2.0 * std::tan(30.0 * kDegree) / 3.0, 1e-5);
+}
+
+TEST(Camera, NffFovSpansPixelCentres) {
+    // NFF `angle` (DESIGN.md, NFF conventions): the angle between the rays through the centres
+    // of the first and last rows (and columns) equals the fov.
+    CameraDesc desc = front_camera(5, 5);
+    desc.vfov_degrees = 40.0f;
+    desc.fov_spans_pixel_centres = true;
+    const Camera camera = Camera::create(desc);
+    EXPECT_NEAR(angle_degrees(camera.generate_ray(2.0f, 0.0f).direction,
+                              camera.generate_ray(2.0f, 4.0f).direction),
+                40.0, 1e-3);
+    EXPECT_NEAR(angle_degrees(camera.generate_ray(0.0f, 2.0f).direction,
+                              camera.generate_ray(4.0f, 2.0f).direction),
+                40.0, 1e-3);
+    // Without the flag the fov spans the image edges, so the centres span less:
+    // 2·atan(tan 20° · 4/5) = 32.4686°.
+    desc.fov_spans_pixel_centres = false;
+    const Camera edges = Camera::create(desc);
+    const double centres = angle_degrees(edges.generate_ray(2.0f, 0.0f).direction,
+                                         edges.generate_ray(2.0f, 4.0f).direction);
+    EXPECT_NEAR(centres, 2.0 * std::atan(std::tan(20.0 * kDegree) * 0.8) / kDegree, 1e-3);
+    EXPECT_NEAR(centres, 32.4686, 1e-3);
+}
+
+TEST(Camera, NffFovSpansPixelCentresWithHfov) {
+    CameraDesc desc = front_camera(9, 3);
+    desc.hfov_degrees = 70.0f;
+    desc.fov_spans_pixel_centres = true;
+    const Camera camera = Camera::create(desc);
+    EXPECT_NEAR(angle_degrees(camera.generate_ray(0.0f, 1.0f).direction,
+                              camera.generate_ray(8.0f, 1.0f).direction),
+                70.0, 1e-3);
+}
+
+// Expects Camera::create to refuse `desc` with an InputError that names `where`.
+void expect_refused(const CameraDesc& desc, const std::string& case_name) {
+    const std::string where = "scene.nff:7 [" + case_name + "]";
+    try {
+        Camera::create(desc, where);
+        ADD_FAILURE() << case_name << ": accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.where(), where) << case_name;
+        EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << case_name;
+        EXPECT_FALSE(e.message().empty()) << case_name;
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << case_name << ": threw something other than InputError: " << e.what();
+    }
+}
+
+CameraDesc valid_desc() {
+    CameraDesc desc = front_camera(16, 9);
+    desc.hfov_degrees = 60.0f;
+    return desc;
+}
+
+TEST(Camera, ValidDescriptionIsAccepted) {
+    // The base description of the refusal tests is itself valid, so each refusal below is caused
+    // by the one field it changes.
+    EXPECT_NO_THROW(Camera::create(valid_desc(), "base"));
+    CameraDesc at_limits = valid_desc();
+    at_limits.width = kMaxImageSide;
+    at_limits.height = int(kMaxImagePixels / kMaxImageSide);  // exactly 2^28 pixels
+    EXPECT_NO_THROW(Camera::create(at_limits, "limits"));
+}
+
+TEST(Camera, RefusesDegenerateFrames) {
+    CameraDesc d = valid_desc();
+    d.look_at = d.eye;
+    expect_refused(d, "eye = look_at");
+
+    d = valid_desc();
+    d.up = Vec3(0.0f, 0.0f, -1.0f);  // along the view direction
+    expect_refused(d, "up parallel to view");
+    d.up = Vec3(0.0f, 0.0f, 3.0f);  // opposite, longer
+    expect_refused(d, "up antiparallel to view");
+
+    d = valid_desc();
+    d.up = Vec3(0.0f);
+    expect_refused(d, "up zero");
+}
+
+TEST(Camera, RefusesNonPositiveDistance) {
+    CameraDesc d = valid_desc();
+    d.distance = 0.0f;
+    expect_refused(d, "distance 0");
+    d.distance = -1.0f;
+    expect_refused(d, "distance -1");
+    d.distance = std::numeric_limits<float>::quiet_NaN();
+    expect_refused(d, "distance NaN");
+}
+
+TEST(Camera, RefusesFovOutsideTheOpenInterval) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    for (float fov : {0.0f, 180.0f, -30.0f, 200.0f, nan, inf}) {
+        CameraDesc d = valid_desc();
+        d.hfov_degrees = fov;
+        expect_refused(d, "hfov " + std::to_string(fov));
+        d = valid_desc();
+        d.hfov_degrees.reset();
+        d.vfov_degrees = fov;
+        expect_refused(d, "vfov " + std::to_string(fov));
+        d = valid_desc();
+        d.vfov_degrees = fov;  // a bad vfov next to a good hfov
+        expect_refused(d, "vfov with hfov " + std::to_string(fov));
+    }
+    CameraDesc d = valid_desc();
+    d.hfov_degrees.reset();
+    expect_refused(d, "no fov");
+}
+
+TEST(Camera, RefusesBadResolution) {
+    for (int bad : {0, -1, -100, kMaxImageSide + 1}) {
+        CameraDesc d = valid_desc();
+        d.width = bad;
+        expect_refused(d, "width " + std::to_string(bad));
+        d = valid_desc();
+        d.height = bad;
+        expect_refused(d, "height " + std::to_string(bad));
+    }
+    // Each side within kMaxImageSide, the product above kMaxImagePixels (2^28 + 32768).
+    CameraDesc d = valid_desc();
+    d.width = kMaxImageSide;
+    d.height = int(kMaxImagePixels / kMaxImageSide) + 1;
+    expect_refused(d, "too many pixels");
+    // Sides whose product overflows a 32-bit int.
+    d.width = kMaxImageSide;
+    d.height = kMaxImageSide;
+    expect_refused(d, "32768x32768");
+}
+
+TEST(Camera, RefusesNonFiniteVectors) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    CameraDesc d = valid_desc();
+    d.eye.x = nan;
+    expect_refused(d, "eye NaN");
+    d = valid_desc();
+    d.eye.z = inf;
+    expect_refused(d, "eye inf");
+    d = valid_desc();
+    d.eye.y = -inf;
+    expect_refused(d, "eye -inf");
+    d = valid_desc();
+    d.look_at.y = nan;
+    expect_refused(d, "look_at NaN");
+    d = valid_desc();
+    d.up.x = inf;
+    expect_refused(d, "up inf");
+}
+
+}  // namespace
+}  // namespace rayo
