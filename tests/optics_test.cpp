@@ -1,0 +1,121 @@
+// Tests of perfect specular reflection and Snell refraction (shading/optics.h, seed 001):
+// closed-form reflections, Snell's law at several angles, total internal reflection around the
+// critical angle.
+#include "shading/optics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace rayo {
+namespace {
+
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+
+void expect_vec_near(const Vec3& actual, const Vec3& expected, float tolerance) {
+    EXPECT_NEAR(actual.x, expected.x, tolerance);
+    EXPECT_NEAR(actual.y, expected.y, tolerance);
+    EXPECT_NEAR(actual.z, expected.z, tolerance);
+}
+
+// Incident direction at `degrees` from the normal (0,1,0), travelling down in the xy plane.
+Vec3 incident_at(double degrees) {
+    return Vec3(float(std::sin(degrees * kDegree)), float(-std::cos(degrees * kDegree)), 0.0f);
+}
+
+TEST(Optics, ReflectMirrorsAboutTheNormal) {
+    const Vec3 n(0.0f, 1.0f, 0.0f);
+    // seed 001: R = I − 2(I·N)N. At 45°: (1,−1,0)/√2 -> (1,1,0)/√2.
+    const float h = std::sqrt(0.5f);
+    expect_vec_near(reflect(Vec3(h, -h, 0.0f), n), Vec3(h, h, 0.0f), 1e-7f);
+    // Normal incidence reverses the ray.
+    expect_vec_near(reflect(Vec3(0.0f, -1.0f, 0.0f), n), Vec3(0.0f, 1.0f, 0.0f), 0.0f);
+    // A general case: I = (2,−3,6)/7 on N = (0,0,−1) (N faces the incident side, N·I < 0):
+    // I·N = −6/7, R = I − 2(−6/7)N = (2,−3,6)/7 + (12/7)(0,0,−1) = (2,−3,−6)/7.
+    expect_vec_near(reflect(Vec3(2.0f, -3.0f, 6.0f) / 7.0f, Vec3(0.0f, 0.0f, -1.0f)),
+                    Vec3(2.0f, -3.0f, -6.0f) / 7.0f, 1e-7f);
+    // Reflection keeps unit length and the angle: R·N = −I·N.
+    const Vec3 i = glm::normalize(Vec3(0.3f, -0.8f, 0.52f));
+    const Vec3 r = reflect(i, n);
+    EXPECT_NEAR(glm::length(r), 1.0f, 1e-6f);
+    EXPECT_NEAR(glm::dot(r, n), -glm::dot(i, n), 1e-6f);
+}
+
+TEST(Optics, RefractAtNormalIncidenceGoesStraightThrough) {
+    const Vec3 n(0.0f, 1.0f, 0.0f);
+    for (float n21 : {1.0f, 1.33f, 1.5f, 1.0f / 1.5f}) {
+        // seed 001 with −I·N = 1: T = I/n21 + (1/n21 − 1)·N = (0,−1,0).
+        const auto t = refract(Vec3(0.0f, -1.0f, 0.0f), n, n21);
+        ASSERT_TRUE(t.has_value()) << n21;
+        expect_vec_near(*t, Vec3(0.0f, -1.0f, 0.0f), 1e-6f);
+    }
+}
+
+TEST(Optics, SnellsLawAtSeveralAngles) {
+    const Vec3 n(0.0f, 1.0f, 0.0f);
+    for (float n21 : {1.33f, 1.5f}) {  // water and glass, from air
+        for (double degrees : {10.0, 30.0, 45.0, 60.0, 80.0, 89.0}) {
+            SCOPED_TRACE(testing::Message() << "n21 " << n21 << " at " << degrees << "°");
+            const Vec3 i = incident_at(degrees);
+            const auto t = refract(i, n, n21);
+            ASSERT_TRUE(t.has_value());
+            EXPECT_NEAR(glm::length(*t), 1.0f, 1e-6f);
+            EXPECT_LT(t->y, 0.0f);           // goes into the surface
+            EXPECT_GT(t->x, 0.0f);           // on the far side of the normal from I
+            EXPECT_NEAR(t->z, 0.0f, 1e-7f);  // in the plane of incidence
+            // Snell: sin i = n21 · sin t, with sin t the tangential component of unit T.
+            const double sin_t = t->x;
+            EXPECT_NEAR(std::sin(degrees * kDegree), n21 * sin_t, 2e-6);
+            // The expected angle itself: t = asin(sin i / n21); e.g. 45° into n = 1.5 gives
+            // 28.1255°.
+            EXPECT_NEAR(std::acos(-double(t->y)) / kDegree,
+                        std::asin(std::sin(degrees * kDegree) / n21) / kDegree, 1e-3);
+        }
+    }
+    // One hand-checked value: 45° into glass, sin t = 0.707107/1.5 = 0.471405, t = 28.1255°.
+    const auto t = refract(incident_at(45.0), n, 1.5f);
+    ASSERT_TRUE(t.has_value());
+    EXPECT_NEAR(t->x, 0.471405f, 1e-6f);
+    EXPECT_NEAR(std::acos(-double(t->y)) / kDegree, 28.1255, 1e-3);
+}
+
+TEST(Optics, SnellsLawLeavingTheDenserMedium) {
+    // From inside glass to air (n21 = 1/1.5) below the critical angle: 20° -> asin(1.5 sin 20°)
+    // = 30.8659°.
+    const Vec3 n(0.0f, 1.0f, 0.0f);
+    const auto t = refract(incident_at(20.0), n, 1.0f / 1.5f);
+    ASSERT_TRUE(t.has_value());
+    EXPECT_NEAR(t->x, 1.5 * std::sin(20.0 * kDegree), 1e-6);
+    EXPECT_NEAR(std::acos(-double(t->y)) / kDegree, 30.8659, 1e-3);
+}
+
+TEST(Optics, TotalInternalReflectionPastTheCriticalAngle) {
+    const Vec3 n(0.0f, 1.0f, 0.0f);
+    const float n21 = 1.0f / 1.5f;  // glass -> air; critical angle asin(1/1.5) = 41.8103°
+    // Just past it: the radicand 1 + (cos² i − 1)/n21² = 1 − 2.25 sin² i is negative.
+    EXPECT_FALSE(refract(incident_at(41.91), n, n21).has_value());
+    EXPECT_FALSE(refract(incident_at(60.0), n, n21).has_value());
+    EXPECT_FALSE(refract(incident_at(89.0), n, n21).has_value());
+    // Just below it (41.71°): sin t = 1.5 sin 41.71° = 0.998041, t = 86.413°: a grazing ray.
+    const auto t = refract(incident_at(41.71), n, n21);
+    ASSERT_TRUE(t.has_value());
+    EXPECT_NEAR(glm::length(*t), 1.0f, 1e-5f);
+    EXPECT_NEAR(t->x, 1.5 * std::sin(41.71 * kDegree), 1e-5);
+    const double angle = std::acos(-double(t->y)) / kDegree;
+    EXPECT_NEAR(angle, std::asin(1.5 * std::sin(41.71 * kDegree)) / kDegree, 0.05);
+    EXPECT_GT(angle, 85.0);
+    EXPECT_LT(angle, 90.0);
+    // Water (n = 1.33) to air: critical angle asin(1/1.33) = 48.753°.
+    EXPECT_TRUE(refract(incident_at(48.65), n, 1.0f / 1.33f).has_value());
+    EXPECT_FALSE(refract(incident_at(48.85), n, 1.0f / 1.33f).has_value());
+}
+
+TEST(Optics, CriticalAngle) {
+    // asin(1/1.5) = 41.8103149°; asin(1/1.33) = 48.7535°.
+    EXPECT_NEAR(critical_angle(1.0f / 1.5f) / kDegree, 41.81, 0.01);
+    EXPECT_NEAR(critical_angle(1.0f / 1.5f) / kDegree, 41.810315, 1e-4);
+    EXPECT_NEAR(critical_angle(1.0f / 1.33f) / kDegree, 48.7535, 1e-3);
+}
+
+}  // namespace
+}  // namespace rayo
