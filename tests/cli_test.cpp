@@ -1,0 +1,200 @@
+// The `rayo` executable end to end: exit status, error messages that name the place, and no
+// output file left behind on failure. Runs the built binary (RAYO_CLI_PATH) in a temp folder.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CommandResult {
+    int exit_code;
+    std::string output;  // stdout and stderr together
+};
+
+class CliTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        m_dir = fs::temp_directory_path() /
+                ("rayo_cli_test_" + std::to_string(::getpid()) + "_" +
+                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(m_dir);
+        fs::create_directories(m_dir);
+    }
+    void TearDown() override { fs::remove_all(m_dir); }
+
+    CommandResult run(const std::string& args) {
+        const fs::path log = m_dir / "log.txt";
+        const std::string command =
+            "cd '" + m_dir.string() + "' && '" RAYO_CLI_PATH "' " + args + " > '" + log.string() +
+            "' 2>&1";
+        const int status = std::system(command.c_str());
+        std::ifstream in(log);
+        std::stringstream text;
+        text << in.rdbuf();
+        fs::remove(log);
+        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+    }
+
+    fs::path write(const std::string& name, const std::string& text) {
+        const fs::path p = m_dir / name;
+        std::ofstream(p) << text;
+        return p;
+    }
+
+    // Files in the folder other than the inputs the test wrote.
+    int count_files_except(const std::string& keep) {
+        int n = 0;
+        for (const auto& e : fs::directory_iterator(m_dir)) {
+            if (e.path().filename() != keep) ++n;
+        }
+        return n;
+    }
+
+    fs::path m_dir;
+};
+
+const char* const kSmallNff =
+    "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution 32 24\n"
+    "b 0.1 0.2 0.3\nl 3 3 3\nf 1 0 0 0.8 0.2 20 0 1\ns 0 0 0 1\n";
+
+TEST_F(CliTest, RendersDefaultSceneToPng) {
+    const CommandResult r = run("render -o out.png --width 80 --height 60");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_TRUE(fs::exists(m_dir / "out.png"));
+    EXPECT_NE(r.output.find("Mrays/s"), std::string::npos) << r.output;  // the summary line
+    EXPECT_NE(r.output.find("shadow"), std::string::npos);
+}
+
+TEST_F(CliTest, RendersNffToEveryFormat) {
+    write("scene.nff", kSmallNff);
+    for (const char* out : {"a.exr", "a.png", "a.tif", "a.jpg"}) {
+        const CommandResult r = run(std::string("render scene.nff --quiet -o ") + out);
+        EXPECT_EQ(r.exit_code, 0) << out << ": " << r.output;
+        EXPECT_TRUE(fs::exists(m_dir / out)) << out;
+        EXPECT_TRUE(r.output.empty()) << "--quiet printed: " << r.output;
+    }
+}
+
+TEST_F(CliTest, StatsPrintsTheFullTable) {
+    write("scene.nff", kSmallNff);
+    const CommandResult r = run("render scene.nff --stats -o s.exr");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    for (const char* row : {"rays camera", "rays shadow", "rays reflection", "rays refraction",
+                            "total internal reflections", "paths cut by depth", "time BVH build"}) {
+        EXPECT_NE(r.output.find(row), std::string::npos) << row;
+    }
+    EXPECT_NE(r.output.find("rays camera                 768"), std::string::npos) << r.output;
+}
+
+TEST_F(CliTest, HelpAndVersion) {
+    CommandResult r = run("--help");
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.output.find("rayo render [SCENE]"), std::string::npos);
+    r = run("render --help");
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.output.find("--max-depth"), std::string::npos);
+    r = run("--version");
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.output.find("rayo "), std::string::npos);
+}
+
+struct BadFlag {
+    const char* args;
+    const char* message;
+};
+
+TEST_F(CliTest, BadFlagsAreRefusedWithoutOutput) {
+    const BadFlag cases[] = {
+        {"render --frobnicate -o x.png", "unknown option '--frobnicate'"},
+        {"render --width abc -o x.png", "--width: expected an integer"},
+        {"render --width 0 -o x.png", "--width: expected an integer in [1,"},
+        {"render --height -5 -o x.png", "--height: expected an integer"},
+        {"render --width 99999999 -o x.png", "--width: expected an integer"},
+        {"render --spp 0 -o x.png", "--spp: expected an integer"},
+        {"render --threads 0 -o x.png", "--threads: expected an integer"},
+        {"render --max-depth 1000 -o x.png", "--max-depth: expected an integer in [0, 64]"},
+        {"render --sphere-math fast -o x.png", "--sphere-math: expected 'stable' or 'seed'"},
+        {"render --range log -o x.png", "--range: expected 'clamp' or 'normalize'"},
+        {"render -o", "-o: missing value"},
+        {"render a.nff b.nff -o x.png", "unexpected argument 'b.nff'"},
+        {"explode", "unknown command 'explode'"},
+    };
+    for (const BadFlag& c : cases) {
+        const CommandResult r = run(c.args);
+        EXPECT_EQ(r.exit_code, 2) << c.args;
+        EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << " -> " << r.output;
+        EXPECT_EQ(count_files_except(""), 0) << c.args;
+    }
+}
+
+TEST_F(CliTest, MissingSceneFileNamesIt) {
+    const CommandResult r = run("render nowhere.nff -o x.png");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.output.find("nowhere.nff"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(m_dir / "x.png"));
+}
+
+TEST_F(CliTest, UnknownSceneExtension) {
+    write("scene.txt", kSmallNff);
+    const CommandResult r = run("render scene.txt -o x.png");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.output.find("scene.txt: unknown scene format"), std::string::npos) << r.output;
+    EXPECT_EQ(count_files_except("scene.txt"), 0);
+}
+
+TEST_F(CliTest, UnwritableOutputLeavesNothing) {
+    write("scene.nff", kSmallNff);
+    CommandResult r = run("render scene.nff -o no/such/dir/x.png");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.output.find("no/such/dir/x.png"), std::string::npos) << r.output;
+    r = run("render scene.nff -o x.bmpx");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.output.find("x.bmpx"), std::string::npos) << r.output;
+    EXPECT_EQ(count_files_except("scene.nff"), 0);
+}
+
+TEST_F(CliTest, UnknownViewIsRefusedAndLeavesNothing) {
+    write("scene.nff", kSmallNff);
+    const CommandResult r = run("render scene.nff --view Nope -o x.png");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.output.find("Nope"), std::string::npos) << r.output;
+    EXPECT_EQ(count_files_except("scene.nff"), 0);
+}
+
+TEST_F(CliTest, DegenerateCamerasAreRefusedWithTheirLine) {
+    struct Case {
+        const char* view;
+        const char* message;
+    };
+    const Case cases[] = {
+        {"from 0 0 0\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0\nresolution 8 8\n", "look_at"},
+        {"from 0 0 5\nat 0 0 0\nup 0 0 1\nangle 40\nhither 0\nresolution 8 8\n", "parallel"},
+        {"from 0 0 5\nat 0 0 0\nup 0 1 0\nangle 180\nhither 0\nresolution 8 8\n", "(0, 180)"},
+        {"from 0 0 5\nat 0 0 0\nup 0 1 0\nangle 0\nhither 0\nresolution 8 8\n", "(0, 180)"},
+    };
+    for (const Case& c : cases) {
+        write("bad.nff", std::string("v\n") + c.view + "f 1 1 1 1 0 1 0 1\ns 0 0 0 1\n");
+        const CommandResult r = run("render bad.nff -o x.png");
+        EXPECT_EQ(r.exit_code, 1) << c.view;
+        EXPECT_NE(r.output.find("bad.nff:1"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(c.message), std::string::npos) << r.output;
+        EXPECT_FALSE(fs::exists(m_dir / "x.png"));
+    }
+}
+
+TEST_F(CliTest, WidthAloneKeepsAspectRatio) {
+    write("scene.nff", kSmallNff);  // 32x24
+    const CommandResult r = run("render scene.nff --width 64 --stats -o x.exr");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("64x48"), std::string::npos) << r.output;
+}
+
+}  // namespace
