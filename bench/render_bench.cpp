@@ -118,6 +118,27 @@ void RawEmbreePoint(benchmark::State& state) {
     rtcCommitGeometry(g);
     rtcAttachGeometry(rtc, g);
     rtcReleaseGeometry(g);
+    // The same floor as the flake scene, so both scenes see the same rays hit the same things.
+    const TriangleMesh& floor = scene.meshes.front();
+    RTCGeometry tris = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(tris, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                          RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                          floor.positions.size()));
+    for (size_t i = 0; i < floor.positions.size(); ++i) {
+        v[3 * i + 0] = floor.positions[i].x;
+        v[3 * i + 1] = floor.positions[i].y;
+        v[3 * i + 2] = floor.positions[i].z;
+    }
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(tris, RTC_BUFFER_TYPE_INDEX, 0,
+                                                               RTC_FORMAT_UINT3,
+                                                               3 * sizeof(unsigned),
+                                                               floor.triangles.size()));
+    for (size_t i = 0; i < floor.triangles.size(); ++i) {
+        for (int k = 0; k < 3; ++k) idx[3 * i + k] = floor.triangles[i][k];
+    }
+    rtcCommitGeometry(tris);
+    rtcAttachGeometry(rtc, tris);
+    rtcReleaseGeometry(tris);
     rtcCommitScene(rtc);
     const std::vector<Ray> rays = camera_rays();
     trace_all(state, rays, [&](const Ray& ray) {
