@@ -8,6 +8,7 @@
 
 #include "core/accel.h"
 #include "core/camera.h"
+#include "core/error.h"
 #include "core/render.h"
 #include "shading/whitted.h"
 
@@ -18,12 +19,41 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Loaders validate as they read; this guards scenes built in code (and any loader slip) against
+// material ids that would index past the material table.
+void check_material_ids(const SceneDescription& d) {
+    const size_t count = d.shading.materials.size();
+    auto check = [&](uint32_t id, const std::string& what) {
+        if (id >= count) {
+            throw InputError(d.source, what + " uses material " + std::to_string(id) + " but only " +
+                                           std::to_string(count) + " are defined");
+        }
+    };
+    for (size_t i = 0; i < d.scene.spheres.size(); ++i) {
+        check(d.scene.spheres[i].material, "sphere " + std::to_string(i));
+    }
+    for (size_t i = 0; i < d.scene.cones.size(); ++i) {
+        check(d.scene.cones[i].material, "cone " + std::to_string(i));
+    }
+    for (size_t m = 0; m < d.scene.meshes.size(); ++m) {
+        const TriangleMesh& mesh = d.scene.meshes[m];
+        if (mesh.materials.size() != mesh.triangles.size()) {
+            throw InputError(d.source, "mesh " + std::to_string(m) + " has " +
+                                           std::to_string(mesh.triangles.size()) +
+                                           " triangles but " +
+                                           std::to_string(mesh.materials.size()) + " material ids");
+        }
+        for (uint32_t id : mesh.materials) check(id, "mesh " + std::to_string(m));
+    }
+}
+
 }  // namespace
 
 int default_thread_count() { return tbb::info::default_concurrency(); }
 
 RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress) {
     const Camera camera = Camera::create(description.scene.camera, description.source + "#/camera");
+    check_material_ids(description);
     RenderResult result;
     result.threads = threads > 0 ? threads : default_thread_count();
     // Limits TBB and Embree's BVH build alike (DESIGN.md: no task_scheduler_init in oneTBB).

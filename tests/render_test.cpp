@@ -6,6 +6,7 @@
 
 #include "apps/default_scene.h"
 #include "apps/renderer.h"
+#include "core/error.h"
 
 namespace rayo {
 namespace {
@@ -168,6 +169,24 @@ TEST(RenderDepth, MaxDepthZeroTracesNoSecondaryRays) {
     EXPECT_EQ(r.counters.reflection, 0u);
     EXPECT_EQ(r.counters.refraction, 0u);
     EXPECT_GT(r.counters.depth_cut, 0u);
+}
+
+}  // namespace
+}  // namespace rayo
+
+namespace rayo {
+namespace {
+
+TEST(RenderValidation, MaterialIdPastTheTableIsAnInputError) {
+    SceneDescription d = lambert_sphere_scene(8);
+    d.scene.spheres[0].material = 3;
+    EXPECT_THROW(render_scene(d, 1, false), InputError);
+    d.scene.spheres[0].material = 0;
+    TriangleMesh mesh;
+    mesh.add_convex_polygon({Vec3(0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {}, 0);
+    mesh.materials[0] = 9;
+    d.scene.meshes.push_back(mesh);
+    EXPECT_THROW(render_scene(d, 1, false), InputError);
 }
 
 }  // namespace
