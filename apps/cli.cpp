@@ -218,12 +218,15 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-int run_render(const std::vector<std::string>& arg_list, std::ostream& out) {
+int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std::ostream& err) {
     const RenderArgs args = parse_render_args(arg_list);
     const auto total_start = std::chrono::steady_clock::now();
     auto start = total_start;
     SceneDescription d = args.scene_path ? load_scene_file(*args.scene_path) : make_default_scene();
     const double parse_s = seconds_since(start);
+    if (!args.quiet) {
+        for (const std::string& w : d.warnings) err << "rayo: warning: " << w << "\n";
+    }
     apply_overrides(args, d);
     const std::string output = args.output ? *args.output : default_output_path(args);
 
@@ -275,7 +278,9 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
         << "meshes " << d.scene.meshes.size() << "\n"
         << "triangles " << d.scene.triangle_count() << "\n"
         << "materials " << d.shading.materials.size() << "\n"
-        << "lights " << d.shading.lights.size() << "\n";
+        << "lights " << d.shading.lights.size() << "\n"
+        << "skipped_triangles " << d.skipped_triangles << "\n";
+    for (const std::string& w : d.warnings) out << "warning: " << w << "\n";
     return 0;
 }
 
@@ -304,7 +309,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
                 return 0;
             }
         }
-        if (command == "render") return run_render(args, out);
+        if (command == "render") return run_render(args, out, err);
         if (command == "info") return run_info(args, out);
         throw UsageError("unknown command '" + command + "' (see rayo --help)");
     } catch (const UsageError& e) {

@@ -3,6 +3,7 @@
 // the render settings it asks for (command-line flags override them).
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/scene.h"
 #include "core/image_output.h"
@@ -23,6 +24,10 @@ struct SceneDescription {
     Scene scene;
     ShadingScene shading;
     RenderSettings settings;
+    // Input that was dropped rather than refused (e.g. zero-area patches of a tessellation),
+    // each "where: what"; the CLI prints them. skipped_triangles counts the triangles they held.
+    std::vector<std::string> warnings;
+    size_t skipped_triangles = 0;
 };
 
 }  // namespace rayo

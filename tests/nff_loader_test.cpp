@@ -340,6 +340,9 @@ TEST(NffLoader, DegeneratePatchesAreSkippedAndCounted) {
         "pp.nff", &info);
     EXPECT_EQ(info.skipped_degenerate_patches, 1u);
     EXPECT_EQ(info.lines, 16u);
+    EXPECT_EQ(d.skipped_triangles, 1u);
+    ASSERT_EQ(d.warnings.size(), 1u);
+    EXPECT_EQ(d.warnings[0], "pp.nff:9: degenerate patch (zero area) skipped");
     ASSERT_EQ(d.scene.meshes.size(), 1u);
     EXPECT_EQ(d.scene.meshes[0].name, "nff patches");
     EXPECT_TRUE(d.scene.meshes[0].one_sided);
