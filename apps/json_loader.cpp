@@ -6,7 +6,6 @@
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <initializer_list>
-#include <iostream>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -656,9 +655,10 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
             compute_vertex_normals(mesh);
         }
     }
-    if (stats.degenerate_triangles > 0) {
-        std::cerr << "rayo: warning: " << where << ": dropped " << stats.degenerate_triangles
-                  << " degenerate triangle(s) of '" << path << "'\n";
+    if (stats.degenerate_triangles > 0) {  // dropped, not refused: reported by the CLI
+        out.warnings.push_back(where + ": dropped " + std::to_string(stats.degenerate_triangles) +
+                               " degenerate (zero-area) triangle(s) of '" + path + "'");
+        out.skipped_triangles += stats.degenerate_triangles;
     }
     out.scene.meshes.push_back(std::move(mesh));
 }

@@ -415,6 +415,19 @@ TEST(JsonLoaderMesh, ObjMeshTransformedWithOverrideAndSmoothing) {
     EXPECT_EQ(d.shading.materials.size(), 2u);  // nothing appended
 }
 
+TEST(JsonLoaderMesh, DegenerateMeshTrianglesReportedAsWarnings) {
+    TempDir dir;
+    dir.write("some_flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\n");
+    const SceneDescription d =
+        load(with_object(R"({"type": "mesh", "file": "some_flat.obj"})"), dir.path());
+    ASSERT_EQ(d.scene.meshes.size(), 1u);
+    EXPECT_EQ(d.scene.meshes[0].triangle_count(), 1u);
+    EXPECT_EQ(d.skipped_triangles, 1u);
+    ASSERT_EQ(d.warnings.size(), 1u);
+    EXPECT_EQ(d.warnings[0].rfind("scene.json#/objects/0/file: dropped 1 degenerate", 0), 0u)
+        << d.warnings[0];
+}
+
 TEST(JsonLoaderMesh, ZeroScaleRejected) {
     TempDir dir;
     dir.write("octa.obj", kOctahedronObj);
