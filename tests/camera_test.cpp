@@ -115,7 +115,11 @@ TEST(Camera, PointsProjectIntoTheMatchingHalfOfTheImage) {
     desc.height = 31;
     desc.hfov_degrees = 50.0f;
     const Camera camera = Camera::create(desc);
-    const Vec3 right = camera.right(), up = camera.up();
+    // Screen right and up of a right-handed world, from the description alone (not from the
+    // camera's own frame, which a mirrored camera would get consistently wrong).
+    const Vec3 view = glm::normalize(desc.look_at - desc.eye);
+    const Vec3 right = glm::normalize(glm::cross(view, desc.up));
+    const Vec3 up = glm::cross(right, view);
     int i = -1, j = -1;
     closest_pixel(camera, desc.look_at + 1.0f * right, i, j);
     EXPECT_GT(i, 20);  // right of the centre column (20)
@@ -129,8 +133,10 @@ TEST(Camera, PointsProjectIntoTheMatchingHalfOfTheImage) {
     closest_pixel(camera, desc.look_at, i, j);
     EXPECT_EQ(i, 20);
     EXPECT_EQ(j, 15);
-    // Right-handed: right × up = −view (camera looks down its −z).
-    expect_vec_near(glm::cross(right, up), -camera.view(), 1e-6f);
+    // The camera's frame is that right-handed frame: right × up = −view (it looks down −z).
+    expect_vec_near(camera.right(), right, 1e-6f);
+    expect_vec_near(camera.up(), up, 1e-6f);
+    expect_vec_near(glm::cross(camera.right(), camera.up()), -camera.view(), 1e-6f);
 }
 
 TEST(Camera, HfovOnlyGivesSquarePixels) {
