@@ -1,11 +1,17 @@
 #include "core/mesh.h"
 
+#include <cmath>
+
 namespace rayo {
 
 bool TriangleMesh::add_convex_polygon(const std::vector<Vec3>& vertices,
                                       const std::vector<Vec3>& vertex_normals,
                                       uint32_t material) {
     if (vertices.size() < 3) return false;
+    if (!vertex_normals.empty() && vertex_normals.size() != vertices.size()) return false;
+    for (const Vec3& v : vertices) {
+        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) return false;
+    }
     // Reject polygons whose fan has no area (all vertices collinear or coincident).
     Vec3 area_vector(0.0f);
     for (size_t i = 1; i + 1 < vertices.size(); ++i) {

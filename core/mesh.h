@@ -22,8 +22,9 @@ struct TriangleMesh {
     bool one_sided = false;
 
     size_t triangle_count() const { return triangles.size(); }
-    // Appends a convex polygon as a triangle fan; returns false when it has fewer than three
-    // vertices or all its triangles are degenerate (zero area).
+    // Appends a convex polygon as a triangle fan; returns false (adding nothing) when it has
+    // fewer than three vertices, a non-finite coordinate, a normal count other than zero or
+    // one per vertex, or all its triangles are degenerate (zero area).
     bool add_convex_polygon(const std::vector<Vec3>& vertices, const std::vector<Vec3>& vertex_normals,
                             uint32_t material);
 };

@@ -1,5 +1,7 @@
 #include "core/sampling.h"
 
+#include <algorithm>
+
 namespace rayo {
 
 PixelOffset stratified_offset(uint32_t x, uint32_t y, uint32_t s, uint32_t spp) {
@@ -11,8 +13,13 @@ PixelOffset stratified_offset(uint32_t x, uint32_t y, uint32_t s, uint32_t spp) 
     const uint32_t rows = spp / columns;
     const uint32_t column = s % columns, row = s / columns;
     const float jitter_x = sample_uniform(x, y, s, 0), jitter_y = sample_uniform(x, y, s, 1);
-    return {(static_cast<float>(column) + jitter_x) / static_cast<float>(columns) - 0.5f,
-            (static_cast<float>(row) + jitter_y) / static_cast<float>(rows) - 0.5f};
+    // (column + jitter) rounds up to column + 1 in float for jitter = 1 − 2⁻²⁴: keep the offset
+    // inside the pixel, [-0.5, 0.5).
+    constexpr float kBelowHalf = 0.49999997f;
+    return {std::min((static_cast<float>(column) + jitter_x) / static_cast<float>(columns) - 0.5f,
+                     kBelowHalf),
+            std::min((static_cast<float>(row) + jitter_y) / static_cast<float>(rows) - 0.5f,
+                     kBelowHalf)};
 }
 
 }  // namespace rayo

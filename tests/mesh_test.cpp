@@ -144,5 +144,17 @@ TEST(Mesh, VertexNormalsStayAlignedWhenMixingFlatAndPatchPolygons) {
     EXPECT_EQ(mesh.materials, (std::vector<uint32_t>{0, 1, 1, 2, 3}));
 }
 
+TEST(Mesh, RejectsNonFiniteVerticesAndMismatchedNormals) {
+    TriangleMesh mesh;
+    const float inf = std::numeric_limits<float>::infinity();
+    EXPECT_FALSE(mesh.add_convex_polygon({Vec3(0), Vec3(inf, 0, 0), Vec3(0, 1, 0)}, {}, 0));
+    EXPECT_FALSE(mesh.add_convex_polygon({Vec3(0), Vec3(1, 0, 0), Vec3(0, NAN, 0)}, {}, 0));
+    // Two normals for three vertices: refused rather than read past the end.
+    EXPECT_FALSE(mesh.add_convex_polygon({Vec3(0), Vec3(1, 0, 0), Vec3(0, 1, 0)},
+                                         {Vec3(0, 0, 1), Vec3(0, 0, 1)}, 0));
+    EXPECT_TRUE(mesh.positions.empty());
+    EXPECT_TRUE(mesh.triangles.empty());
+}
+
 }  // namespace
 }  // namespace rayo
