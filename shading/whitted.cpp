@@ -8,7 +8,9 @@
 namespace rayo {
 namespace {
 
-float max_component(const Vec3& v) { return glm::max(v.x, glm::max(v.y, v.z)); }
+float max_component(const Vec3& v) {
+    return glm::max(v.x, glm::max(v.y, v.z));
+}
 
 }  // namespace
 
@@ -32,8 +34,8 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const Vec3& weight,
     return shade(ray, hit, depth, weight, counters);
 }
 
-Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth,
-                              const Vec3& weight, RayCounters& counters) const {
+Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth, const Vec3& weight,
+                              RayCounters& counters) const {
     const Material& material = m_scene.materials[hit.material];
     // Which side the ray arrived on: seed 000 flips the normal for hits from inside (t1).
     const bool entering = glm::dot(ray.direction, hit.geometric_normal) < 0.0f;
@@ -70,10 +72,11 @@ Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth,
         shadow.origin = shadow_origin;
         shadow.direction = to_light;
         shadow.tnear = 0.0f;
-        shadow.tfar = std::isfinite(light_distance)
-                          ? glm::length(hit.position + light_distance * to_light - shadow_origin) *
-                                (1.0f - 1e-5f)
-                          : std::numeric_limits<float>::infinity();
+        // Stop just short of a point light so the light's own position is never "in the way".
+        shadow.tfar =
+            std::isfinite(light_distance)
+                ? glm::dot(hit.position - shadow_origin, to_light) + light_distance * (1.0f - 1e-5f)
+                : std::numeric_limits<float>::infinity();
         ++counters.shadow;
         if (m_accel.occluded(shadow)) continue;
         color += phong_direct(material, normal, to_light, to_eye, light_radiance);
