@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <string>
 #include <variant>
 
@@ -241,6 +242,9 @@ struct ErrorCase {
     std::string where;
     std::string message_part;
 };
+
+// Printed by ctest's test list instead of the struct's raw bytes.
+void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
 
 class JsonLoaderErrors : public ::testing::TestWithParam<ErrorCase> {};
 
