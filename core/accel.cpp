@@ -328,7 +328,10 @@ bool Accel::intersect(const Ray& ray, SurfaceHit& hit) const {
             hit.position = ray.at(t);
             hit.geometric_normal = glm::normalize(ng);
             hit.shading_normal = hit.geometric_normal;
-            if (!mesh.normals.empty()) {
+            // Interpolate vertex normals only where all three corners have one (a zero normal
+            // marks a corner without: flat faces mixed into a smooth mesh).
+            if (!mesh.normals.empty() && mesh.normals[tri[0]] != Vec3(0.0f) &&
+                mesh.normals[tri[1]] != Vec3(0.0f) && mesh.normals[tri[2]] != Vec3(0.0f)) {
                 const float u = rayhit.hit.u, v = rayhit.hit.v;
                 const Vec3 n = (1.0f - u - v) * mesh.normals[tri[0]] + u * mesh.normals[tri[1]] +
                                v * mesh.normals[tri[2]];

@@ -272,6 +272,21 @@ TEST(AccelTriangles, HitAtKnownDistanceWithInterpolatedNormal) {
     EXPECT_FALSE(accel.occluded(ray));
 }
 
+TEST(AccelTriangles, CornerWithoutNormalFallsBackToGeometricNormal) {
+    Scene scene;
+    scene.meshes.push_back(square_mesh(true, false));
+    TriangleMesh& mesh = scene.meshes[0];
+    const auto first = mesh.triangles[0];
+    mesh.normals[first[1]] = Vec3(0.0f);  // one corner of the first triangle has no normal
+    const Accel accel(scene);
+    Ray ray;
+    ray.origin = Vec3(0.5f, -0.25f, 5.0f);  // inside triangle (0,1,2)
+    ray.direction = Vec3(0.0f, 0.0f, -1.0f);
+    SurfaceHit hit;
+    ASSERT_TRUE(accel.intersect(ray, hit));
+    expect_vec_near(hit.shading_normal, hit.geometric_normal, 1e-6f);
+}
+
 TEST(AccelTriangles, ObliqueHitDistance) {
     // A ray from (0,0,3) toward (0.6, 0.2, 0): t = |(0.6, 0.2, −3)| = √9.4 = 3.065942.
     Scene scene;
