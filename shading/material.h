@@ -1,6 +1,7 @@
 #pragma once
 // Phong materials (seed 000 eqs. [22]-[24], seed 003 eq. 2.1): per-channel ambient, diffuse and
 // specular coefficients, the specular exponent, and the Whitted transport weights.
+#include <cstdint>
 #include <string>
 
 #include "core/math.h"
@@ -10,6 +11,21 @@ namespace rayo {
 enum class SpecularModel {
     Phong,  // (V·R)^n, seed 000 eq. [24]
     Blinn,  // (N·H)^n, seed 000 eq. [28]
+};
+
+// Procedural textures of a material (seed 003 ch. 3): indices into ShadingScene::textures, or
+// kNoTexture. A textured ka/kd/ks takes the texture's colour at the hit point; `bump` perturbs the
+// shading normal by its gradient (texture.h bump_normal).
+constexpr int32_t kNoTexture = -1;
+
+struct MaterialTextures {
+    int32_t ka = kNoTexture;
+    int32_t kd = kNoTexture;
+    int32_t ks = kNoTexture;
+    int32_t bump = kNoTexture;
+    float bump_strength = 1.0f;
+
+    bool any() const { return ka >= 0 || kd >= 0 || ks >= 0 || bump >= 0; }
 };
 
 struct Material {
@@ -22,6 +38,7 @@ struct Material {
     Vec3 reflect{0.0f};         // perfect mirror weight, seed 001
     Vec3 transmit{0.0f};        // perfect specular transmission weight, seed 001
     float ior = 1.0f;           // index of refraction of the inside (outside is 1)
+    MaterialTextures textures;  // none by default: the constant coefficients above
 
     bool transmissive() const { return transmit.x > 0.0f || transmit.y > 0.0f || transmit.z > 0.0f; }
     bool reflective() const { return reflect.x > 0.0f || reflect.y > 0.0f || reflect.z > 0.0f; }

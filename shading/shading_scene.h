@@ -1,16 +1,18 @@
 #pragma once
 // What the shaders need besides geometry: materials (indexed by the primitives' material ids),
-// lights, the ambient light Ia and the background colour.
+// lights, procedural textures (indexed by the materials), the ambient light Ia and the background.
 #include <vector>
 
 #include "shading/light.h"
 #include "shading/material.h"
+#include "shading/texture.h"
 
 namespace rayo {
 
 struct ShadingScene {
     std::vector<Material> materials;
     std::vector<Light> lights;
+    std::vector<Texture> textures;  // MaterialTextures index this table
     Vec3 ambient_light{1.0f};  // Ia, seed 000 eq. [20]
     Vec3 background{0.0f};
 };

@@ -1,6 +1,7 @@
 #include "shading/whitted.h"
 
 #include <limits>
+#include <optional>
 
 #include "shading/optics.h"
 #include "shading/phong.h"
@@ -10,6 +11,32 @@ namespace {
 
 float max_component(const Vec3& v) {
     return glm::max(v.x, glm::max(v.y, v.z));
+}
+
+// The texture of index `id`, or null for kNoTexture (or an index the loaders would have refused).
+const Texture* texture_at(const std::vector<Texture>& textures, int32_t id) {
+    return id >= 0 && static_cast<size_t>(id) < textures.size() ? &textures[id] : nullptr;
+}
+
+// The effective coefficients of a textured material at `position` (seed 003 ch. 3): each textured
+// ka/kd/ks replaced by its texture's colour there. Copies every other field but the name, so a
+// hit allocates nothing.
+Material material_at(const Material& m, const std::vector<Texture>& textures,
+                     const Vec3& position) {
+    Material local;
+    const Texture* ka = texture_at(textures, m.textures.ka);
+    const Texture* kd = texture_at(textures, m.textures.kd);
+    const Texture* ks = texture_at(textures, m.textures.ks);
+    local.ka = ka ? ka->color(position) : m.ka;
+    local.kd = kd ? kd->color(position) : m.kd;
+    local.ks = ks ? ks->color(position) : m.ks;
+    local.shininess = m.shininess;
+    local.specular_model = m.specular_model;
+    local.reflect = m.reflect;
+    local.transmit = m.transmit;
+    local.ior = m.ior;
+    local.textures = m.textures;
+    return local;
 }
 
 }  // namespace
@@ -36,11 +63,21 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const Vec3& weight,
 
 Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth, const Vec3& weight,
                               RayCounters& counters) const {
-    const Material& material = m_scene.materials[hit.material];
+    const Material& base = m_scene.materials[hit.material];
     // Which side the ray arrived on: seed 000 flips the normal for hits from inside (t1).
     const bool entering = glm::dot(ray.direction, hit.geometric_normal) < 0.0f;
     const Vec3 facing_geometric = entering ? hit.geometric_normal : -hit.geometric_normal;
-    const Vec3 normal = entering ? hit.shading_normal : -hit.shading_normal;
+    Vec3 normal = entering ? hit.shading_normal : -hit.shading_normal;
+    // Procedural textures (seed 003 ch. 3): untextured materials skip this and are used as is.
+    std::optional<Material> textured;
+    if (base.textures.any()) {
+        textured.emplace(material_at(base, m_scene.textures, hit.position));
+        if (const Texture* bump = texture_at(m_scene.textures, base.textures.bump)) {
+            normal = bump_normal(*bump, base.textures.bump_strength, hit.position, normal,
+                                 facing_geometric);
+        }
+    }
+    const Material& material = textured ? *textured : base;
     const Vec3 to_eye = -ray.direction;
 
     // Local model, seed 003 eq. 2.1: I = ka·Ia + Σ f(d)·Il·[kd(n·l) + ks(…)^n], with a shadow ray
