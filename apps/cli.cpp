@@ -1,6 +1,7 @@
 #include "apps/cli.h"
 
 #include <charconv>
+#include <cstdlib>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -43,7 +44,11 @@ render options:
   --threads N              worker threads [all cores]
   --max-depth N            maximum reflection/refraction depth, 0..64 [scene's, default 5]
   --tile-size N            tile side in pixels [16]
-  --sphere-math M          stable (default) or seed (seed 000's algebraic form)
+  --sphere-method M        auto (default), user, bruteforce, embree-point, mesh:N (N 0..7:
+                           20·4^N triangles per sphere)
+  --sphere-math P          stable (default), seed (seed 000's algebraic form), double
+  --max-error-px E         auto's error budget in pixels [0.5]
+  --flat-spheres           mesh:N spheres with flat facets instead of smooth normals
   --display D, --view V    OCIO display and view for PNG/TIFF/JPEG [config defaults]
   --range R                clamp (default) or normalize (divide by the image maximum)
   --half                   write EXR as half float
@@ -73,6 +78,9 @@ struct RenderArgs {
     std::optional<std::string> output;
     std::optional<int> width, height, spp, threads, max_depth, tile_size;
     std::optional<SphereMath> sphere_math;
+    std::optional<SphereRepresentation> sphere_method;
+    std::optional<float> max_error_px;
+    bool flat_spheres = false;
     OutputOptions output_options;
     bool quiet = false;
     bool stats = false;
@@ -102,13 +110,28 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             r.tile_size = parse_int(a, value(), 1, 4096);
         } else if (a == "--sphere-math") {
             const std::string& m = value();
-            if (m == "stable") {
-                r.sphere_math = SphereMath::Stable;
-            } else if (m == "seed") {
-                r.sphere_math = SphereMath::Seed;
-            } else {
-                throw UsageError(a + ": expected 'stable' or 'seed', got '" + m + "'");
+            r.sphere_math = parse_sphere_math(m);
+            if (!r.sphere_math) {
+                throw UsageError(a + ": expected 'stable', 'seed' or 'double', got '" + m + "'");
             }
+        } else if (a == "--sphere-method") {
+            const std::string& m = value();
+            r.sphere_method = parse_sphere_method(m);
+            if (!r.sphere_method) {
+                throw UsageError(a + ": expected auto, user, bruteforce, embree-point or mesh:N " +
+                                 "(N in 0.." + std::to_string(kMaxMeshLevel) + "), got '" + m +
+                                 "'");
+            }
+        } else if (a == "--max-error-px") {
+            const std::string& m = value();
+            char* end = nullptr;
+            const float e = std::strtof(m.c_str(), &end);
+            if (m.empty() || *end != '\0' || !(e > 0.0f) || !std::isfinite(e)) {
+                throw UsageError(a + ": expected a number > 0, got '" + m + "'");
+            }
+            r.max_error_px = e;
+        } else if (a == "--flat-spheres") {
+            r.flat_spheres = true;
         } else if (a == "--display") {
             r.output_options.display = value();
         } else if (a == "--view") {
@@ -159,6 +182,9 @@ void apply_overrides(const RenderArgs& args, SceneDescription& d) {
     if (args.max_depth) d.settings.whitted.max_depth = *args.max_depth;
     if (args.tile_size) d.settings.tile_size = *args.tile_size;
     if (args.sphere_math) d.settings.sphere_math = *args.sphere_math;
+    if (args.sphere_method) d.settings.spheres = *args.sphere_method;
+    if (args.flat_spheres) d.settings.spheres.mesh_smooth = false;
+    if (args.max_error_px) d.settings.max_error_px = *args.max_error_px;
 }
 
 std::string default_output_path(const RenderArgs& args) {
@@ -190,8 +216,8 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "  resolution                  " << d.scene.camera.width << "x" << d.scene.camera.height
         << ", " << d.settings.spp << " spp, tile " << d.settings.tile_size << "\n"
         << "  threads                     " << r.threads << "\n"
-        << "  sphere math                 "
-        << (d.settings.sphere_math == SphereMath::Seed ? "seed" : "stable") << "\n"
+        << "  sphere method               " << sphere_method_name(r.spheres.spheres) << " ("
+        << sphere_math_name(r.spheres.math) << "): " << r.spheres.reason << "\n"
         << "  primitives                  " << r.primitives << " (" << d.scene.spheres.size()
         << " spheres, " << d.scene.cones.size() << " cones, " << d.scene.triangle_count()
         << " triangles)\n"

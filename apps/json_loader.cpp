@@ -380,7 +380,8 @@ void SceneParser::parse_render(const Json& value, const std::string& pointer,
                                RenderSettings& s) const {
     require_object(value, pointer, "a render settings object");
     check_keys(value, pointer,
-               {"spp", "max_depth", "min_contribution", "tile_size", "sphere_math"});
+               {"spp", "max_depth", "min_contribution", "tile_size", "sphere_math",
+                "sphere_method"});
     if (const Json* v = find(value, "spp")) s.spp = integer(*v, child(pointer, "spp"), 1, 1 << 20);
     if (const Json* v = find(value, "max_depth")) {
         s.whitted.max_depth = integer(*v, child(pointer, "max_depth"), 0, 64);
@@ -391,9 +392,20 @@ void SceneParser::parse_render(const Json& value, const std::string& pointer,
         s.tile_size = integer(*v, child(pointer, "tile_size"), 1, 4096);
     }
     if (const Json* v = find(value, "sphere_math")) {
-        s.sphere_math = choice(*v, child(pointer, "sphere_math"), {"stable", "seed"}) == "seed"
-                            ? SphereMath::Seed
-                            : SphereMath::Stable;
+        s.sphere_math = *parse_sphere_math(
+            choice(*v, child(pointer, "sphere_math"), {"stable", "seed", "double"}));
+    }
+    if (const Json* v = find(value, "sphere_method")) {
+        const std::string where = child(pointer, "sphere_method");
+        if (!v->is_string()) fail(where, "expected a sphere method name, got " + describe(*v));
+        const std::optional<SphereRepresentation> method =
+            parse_sphere_method(v->get<std::string>());
+        if (!method) {
+            fail(where, "expected one of \"auto\", \"user\", \"bruteforce\", \"embree-point\", "
+                        "\"mesh:N\" (N in 0.." + std::to_string(kMaxMeshLevel) + "), got " +
+                            describe(*v));
+        }
+        s.spheres = *method;
     }
 }
 

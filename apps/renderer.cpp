@@ -61,8 +61,10 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
                               static_cast<size_t>(result.threads));
 
     auto start = std::chrono::steady_clock::now();
+    result.spheres = choose_sphere_method(description, camera);
     AccelOptions accel_options;
-    accel_options.sphere_math = description.settings.sphere_math;
+    accel_options.spheres = result.spheres.spheres;
+    accel_options.sphere_math = result.spheres.math;
     const Accel accel(description.scene, accel_options);
     result.bvh_seconds = seconds_since(start);
     result.primitives = accel.primitive_count();

@@ -2,6 +2,7 @@
 // One render of a scene description, end to end in memory: camera validation, the Embree BVH,
 // the Whitted integrator in the TBB tile loop. Returns the film, ray counts and phase times.
 #include "apps/scene_description.h"
+#include "apps/sphere_method_choice.h"
 #include "core/film.h"
 #include "core/stats.h"
 
@@ -14,6 +15,7 @@ struct RenderResult {
     double render_seconds = 0.0;
     size_t primitives = 0;
     int threads = 0;
+    SphereChoice spheres;  // the sphere method and math that ran, and why
 };
 
 // threads = 0: all cores. Throws InputError for an invalid camera.

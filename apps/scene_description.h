@@ -7,6 +7,7 @@
 
 #include "core/scene.h"
 #include "core/image_output.h"
+#include "core/sphere_method.h"
 #include "shading/shading_scene.h"
 #include "shading/whitted.h"
 
@@ -16,6 +17,8 @@ struct RenderSettings {
     int spp = 1;
     int tile_size = 16;
     SphereMath sphere_math = SphereMath::Stable;
+    SphereRepresentation spheres{SphereMethod::Auto};  // --sphere-method; auto by default
+    float max_error_px = 0.5f;                         // auto's error budget, in pixels
     WhittedSettings whitted;
 };
 

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/icosphere.h"
+
 namespace rayo {
 namespace {
 
@@ -202,34 +204,18 @@ RTCRay make_rtc_ray(const Ray& ray) {
 
 Accel::Accel(const Scene& scene, const AccelOptions& options)
     : m_scene(scene), m_options(options) {
+    if (options.spheres.method == SphereMethod::Auto) {
+        throw std::logic_error("Accel: the auto sphere method must be resolved by the caller");
+    }
     m_device = rtcNewDevice(nullptr);
     if (!m_device) throw std::runtime_error("Embree: cannot create a device");
     m_rtc_scene = rtcNewScene(m_device);
     rtcSetSceneFlags(m_rtc_scene, options.robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
     rtcSetSceneBuildQuality(m_rtc_scene, RTC_BUILD_QUALITY_HIGH);
-
     m_user_data = std::make_unique<AccelUserData>();
     m_user_data->meshes.resize(scene.meshes.size());
-    auto attach = [&](RTCGeometry geometry, PrimitiveKind kind, uint32_t index) {
-        rtcCommitGeometry(geometry);
-        const unsigned id = rtcAttachGeometry(m_rtc_scene, geometry);
-        rtcReleaseGeometry(geometry);
-        if (id >= m_geometries.size()) m_geometries.resize(id + 1);
-        m_geometries[id] = GeometryRef{kind, index};
-    };
 
-    if (!scene.spheres.empty()) {
-        SphereGeometryData* data = &m_user_data->spheres;
-        *data = SphereGeometryData{scene.spheres.data(), options.sphere_math};
-        RTCGeometry g = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
-        rtcSetGeometryUserPrimitiveCount(g, static_cast<unsigned>(scene.spheres.size()));
-        rtcSetGeometryUserData(g, data);  // Embree 3 ignores the bounds function's own pointer
-        rtcSetGeometryBoundsFunction(g, sphere_bounds, nullptr);
-        rtcSetGeometryIntersectFunction(g, sphere_intersect);
-        rtcSetGeometryOccludedFunction(g, sphere_occluded);
-        attach(g, PrimitiveKind::Sphere, 0);
-        m_primitive_count += scene.spheres.size();
-    }
+    if (!scene.spheres.empty()) add_sphere_geometry();
     if (!scene.cones.empty()) {
         ConeGeometryData* data = &m_user_data->cones;
         data->cones = scene.cones.data();
@@ -239,7 +225,7 @@ Accel::Accel(const Scene& scene, const AccelOptions& options)
         rtcSetGeometryBoundsFunction(g, cone_bounds, nullptr);
         rtcSetGeometryIntersectFunction(g, cone_intersect);
         rtcSetGeometryOccludedFunction(g, cone_occluded);
-        attach(g, PrimitiveKind::Cone, 0);
+        attach(g, GeometryKind::Cones, 0);
         m_primitive_count += scene.cones.size();
     }
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
@@ -270,16 +256,127 @@ Accel::Accel(const Scene& scene, const AccelOptions& options)
             rtcSetGeometryIntersectFilterFunction(g, cull_back_faces);
             rtcSetGeometryOccludedFilterFunction(g, cull_back_faces);
         }
-        attach(g, PrimitiveKind::Triangle, static_cast<uint32_t>(m));
+        attach(g, GeometryKind::Mesh, static_cast<uint32_t>(m));
         m_primitive_count += mesh.triangles.size();
     }
     rtcCommitScene(m_rtc_scene);
     fail_on_embree_error(m_device, "scene commit");
 }
 
+void Accel::attach(RTCGeometry geometry, GeometryKind kind, uint32_t index) {
+    rtcCommitGeometry(geometry);
+    const unsigned id = rtcAttachGeometry(m_rtc_scene, geometry);
+    rtcReleaseGeometry(geometry);
+    if (id >= m_geometries.size()) m_geometries.resize(id + 1);
+    m_geometries[id] = GeometryRef{kind, index};
+}
+
+void Accel::add_sphere_geometry() {
+    const std::vector<Sphere>& spheres = m_scene.spheres;
+    switch (m_options.spheres.method) {
+        case SphereMethod::BruteForce:
+            // No BVH: intersect() and occluded() test every sphere themselves.
+            m_primitive_count += spheres.size();
+            return;
+        case SphereMethod::User: {
+            SphereGeometryData* data = &m_user_data->spheres;
+            *data = SphereGeometryData{spheres.data(), m_options.sphere_math};
+            RTCGeometry g = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
+            rtcSetGeometryUserPrimitiveCount(g, static_cast<unsigned>(spheres.size()));
+            rtcSetGeometryUserData(g, data);  // Embree 3 ignores the bounds function's pointer
+            rtcSetGeometryBoundsFunction(g, sphere_bounds, nullptr);
+            rtcSetGeometryIntersectFunction(g, sphere_intersect);
+            rtcSetGeometryOccludedFunction(g, sphere_occluded);
+            attach(g, GeometryKind::UserSpheres, 0);
+            break;
+        }
+        case SphereMethod::EmbreePoint: {
+            RTCGeometry g = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+            auto* points = static_cast<float*>(
+                rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                                        4 * sizeof(float), spheres.size()));
+            for (size_t i = 0; i < spheres.size(); ++i) {
+                points[4 * i + 0] = spheres[i].center.x;
+                points[4 * i + 1] = spheres[i].center.y;
+                points[4 * i + 2] = spheres[i].center.z;
+                points[4 * i + 3] = spheres[i].radius;
+            }
+            attach(g, GeometryKind::PointSpheres, 0);
+            break;
+        }
+        case SphereMethod::Mesh: {
+            Icosphere unit = make_icosphere(m_options.spheres.mesh_level);
+            m_triangles_per_sphere = static_cast<uint32_t>(unit.triangles.size());
+            const size_t vertex_count = unit.positions.size();
+            RTCGeometry g = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_TRIANGLE);
+            auto* vertices = static_cast<float*>(
+                rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                        3 * sizeof(float), spheres.size() * vertex_count));
+            auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+                g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
+                spheres.size() * unit.triangles.size()));
+            for (size_t i = 0; i < spheres.size(); ++i) {
+                for (size_t v = 0; v < vertex_count; ++v) {
+                    const Vec3 p = spheres[i].center + spheres[i].radius * unit.positions[v];
+                    float* out = vertices + 3 * (i * vertex_count + v);
+                    out[0] = p.x;
+                    out[1] = p.y;
+                    out[2] = p.z;
+                }
+                const auto first = static_cast<unsigned>(i * vertex_count);
+                unsigned* out = indices + 3 * i * unit.triangles.size();
+                for (const auto& t : unit.triangles) {
+                    *out++ = first + t[0];
+                    *out++ = first + t[1];
+                    *out++ = first + t[2];
+                }
+            }
+            m_icosphere_normals = std::move(unit.positions);
+            m_icosphere_triangles = std::move(unit.triangles);
+            attach(g, GeometryKind::SphereMesh, 0);
+            m_primitive_count += spheres.size() * m_triangles_per_sphere;
+            return;
+        }
+        case SphereMethod::Auto: break;
+    }
+    m_primitive_count += spheres.size();
+}
+
 Accel::~Accel() {
     if (m_rtc_scene) rtcReleaseScene(m_rtc_scene);
     if (m_device) rtcReleaseDevice(m_device);
+}
+
+bool Accel::nearest_sphere_brute_force(const Ray& ray, float tfar, uint32_t& index,
+                                       float& t) const {
+    bool found = false;
+    const auto count = static_cast<uint32_t>(m_scene.spheres.size());
+    for (uint32_t i = 0; i < count; ++i) {
+        const Sphere& s = m_scene.spheres[i];
+        float candidate;
+        bool far_root;
+        if (intersect_sphere(m_options.sphere_math, ray.origin, ray.direction, s.center, s.radius,
+                             ray.tnear, tfar, candidate, far_root)) {
+            tfar = candidate;
+            t = candidate;
+            index = i;
+            found = true;
+        }
+    }
+    return found;
+}
+
+void Accel::fill_sphere_hit(const Ray& ray, float t, uint32_t sphere, SurfaceHit& hit) const {
+    const Sphere& s = m_scene.spheres[sphere];
+    // Re-project the hit point onto the sphere (DESIGN.md "Numerics").
+    const Vec3 outward = glm::normalize(ray.at(t) - s.center);
+    hit.t = t;
+    hit.kind = PrimitiveKind::Sphere;
+    hit.position = s.center + s.radius * outward;
+    hit.geometric_normal = outward;
+    hit.shading_normal = outward;
+    hit.object_size = s.radius;
+    hit.material = s.material;
 }
 
 bool Accel::intersect(const Ray& ray, SurfaceHit& hit) const {
@@ -291,27 +388,52 @@ bool Accel::intersect(const Ray& ray, SurfaceHit& hit) const {
     rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(m_rtc_scene, &context, &rayhit);
-    if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    const bool embree_hit = rayhit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+
+    if (m_options.spheres.method == SphereMethod::BruteForce && !m_scene.spheres.empty()) {
+        uint32_t sphere;
+        float t;
+        if (nearest_sphere_brute_force(ray, embree_hit ? rayhit.ray.tfar : ray.tfar, sphere, t)) {
+            fill_sphere_hit(ray, t, sphere, hit);
+            return true;
+        }
+    }
+    if (!embree_hit) return false;
 
     const float t = rayhit.ray.tfar;
     const uint32_t prim = rayhit.hit.primID;
     const GeometryRef& ref = m_geometries[rayhit.hit.geomID];
     hit.t = t;
-    hit.kind = ref.kind;
     switch (ref.kind) {
-        case PrimitiveKind::Sphere: {
-            const Sphere& s = m_scene.spheres[prim];
-            // Re-project the hit point onto the sphere (DESIGN.md "Numerics").
-            const Vec3 outward = glm::normalize(ray.at(t) - s.center);
-            hit.position = s.center + s.radius * outward;
-            hit.geometric_normal = outward;
-            hit.shading_normal = outward;
-            hit.object_size = s.radius;
-            hit.material = s.material;
+        case GeometryKind::UserSpheres:
+        case GeometryKind::PointSpheres:
+            fill_sphere_hit(ray, t, prim, hit);
+            break;
+        case GeometryKind::SphereMesh: {
+            // The tessellation is the surface: no re-projection, so its silhouette and facet
+            // error show in the image, which is what the comparison measures.
+            const uint32_t sphere = prim / m_triangles_per_sphere;
+            const auto& tri = m_icosphere_triangles[prim % m_triangles_per_sphere];
+            const Vec3& n0 = m_icosphere_normals[tri[0]];
+            const Vec3 flat = glm::normalize(
+                glm::cross(m_icosphere_normals[tri[1]] - n0, m_icosphere_normals[tri[2]] - n0));
+            hit.kind = PrimitiveKind::Sphere;
+            hit.position = ray.at(t);
+            hit.geometric_normal = flat;
+            hit.shading_normal = flat;
+            if (m_options.spheres.mesh_smooth) {
+                const float u = rayhit.hit.u, v = rayhit.hit.v;
+                hit.shading_normal = glm::normalize((1.0f - u - v) * n0 +
+                                                    u * m_icosphere_normals[tri[1]] +
+                                                    v * m_icosphere_normals[tri[2]]);
+            }
+            hit.object_size = m_scene.spheres[sphere].radius;
+            hit.material = m_scene.spheres[sphere].material;
             break;
         }
-        case PrimitiveKind::Cone: {
+        case GeometryKind::Cones: {
             const Cone& c = m_scene.cones[prim];
+            hit.kind = PrimitiveKind::Cone;
             hit.position = ray.at(t);
             hit.geometric_normal = glm::normalize(
                 Vec3(rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z));
@@ -321,10 +443,11 @@ bool Accel::intersect(const Ray& ray, SurfaceHit& hit) const {
             hit.material = c.material;
             break;
         }
-        case PrimitiveKind::Triangle: {
+        case GeometryKind::Mesh: {
             const TriangleMesh& mesh = m_scene.meshes[ref.index];
             const auto& tri = mesh.triangles[prim];
             const Vec3 ng = triangle_normal(mesh, prim);
+            hit.kind = PrimitiveKind::Triangle;
             hit.position = ray.at(t);
             hit.geometric_normal = glm::normalize(ng);
             hit.shading_normal = hit.geometric_normal;
@@ -354,6 +477,11 @@ bool Accel::intersect(const Ray& ray, SurfaceHit& hit) const {
 }
 
 bool Accel::occluded(const Ray& ray) const {
+    if (m_options.spheres.method == SphereMethod::BruteForce && !m_scene.spheres.empty()) {
+        uint32_t sphere;
+        float t;
+        if (nearest_sphere_brute_force(ray, ray.tfar, sphere, t)) return true;
+    }
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay r = make_rtc_ray(ray);

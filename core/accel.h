@@ -3,6 +3,7 @@
 // cones as user geometry (our own intersection code) and the meshes as Embree triangles.
 // Follows the Embree 3 call order: device -> scene -> geometries -> commit, then trace.
 #include <cstdint>
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -10,11 +11,13 @@
 
 #include "core/ray.h"
 #include "core/scene.h"
+#include "core/sphere_method.h"
 
 namespace rayo {
 
 struct AccelOptions {
-    SphereMath sphere_math = SphereMath::Stable;
+    SphereRepresentation spheres;                 // method; Auto must be resolved before
+    SphereMath sphere_math = SphereMath::Stable;  // for the analytic methods (user, bruteforce)
     bool robust = true;  // RTC_SCENE_FLAG_ROBUST: watertight triangles (DESIGN.md)
 };
 
@@ -49,10 +52,17 @@ public:
     size_t primitive_count() const { return m_primitive_count; }
 
 private:
+    enum class GeometryKind : uint8_t { UserSpheres, PointSpheres, SphereMesh, Cones, Mesh };
     struct GeometryRef {
-        PrimitiveKind kind;
-        uint32_t index;  // mesh index for triangles; unused for spheres and cones
+        GeometryKind kind;
+        uint32_t index;  // mesh index for Mesh; unused otherwise
     };
+
+    void attach(RTCGeometry geometry, GeometryKind kind, uint32_t index);
+    void add_sphere_geometry();
+    // Nearest sphere in (tnear, tfar) by testing every sphere (SphereMethod::BruteForce).
+    bool nearest_sphere_brute_force(const Ray& ray, float tfar, uint32_t& index, float& t) const;
+    void fill_sphere_hit(const Ray& ray, float t, uint32_t sphere, SurfaceHit& hit) const;
 
     const Scene& m_scene;
     AccelOptions m_options;
@@ -61,6 +71,9 @@ private:
     std::unique_ptr<AccelUserData> m_user_data;
     std::vector<GeometryRef> m_geometries;  // indexed by Embree geomID
     size_t m_primitive_count = 0;
+    uint32_t m_triangles_per_sphere = 0;  // SphereMesh
+    std::vector<Vec3> m_icosphere_normals;
+    std::vector<std::array<uint32_t, 3>> m_icosphere_triangles;
 };
 
 }  // namespace rayo

@@ -5,7 +5,9 @@
 //    spheres far from the origin of the ray.
 //  - SphereMath::Stable (default, DESIGN.md "Numerics"): Δ from the perpendicular distance
 //    r² − |f − (f·d)d|², roots via q = −(b + sign(b)√Δ), t = c/q and t = q, c = (|f|−r)(|f|+r).
-// Both apply the seed's rule: the near root if it lies past tnear, else the far root (the ray
+//  - SphereMath::Double: the stable form evaluated in double precision, t rounded to float at
+//    the end: the accuracy reference of the analytic-vs-BVH comparison.
+// All apply the seed's rule: the near root if it lies past tnear, else the far root (the ray
 // starts inside: seed 000 hits at t1 and flips the normal).
 #include <cmath>
 #include <cstdint>
@@ -14,7 +16,7 @@
 
 namespace rayo {
 
-enum class SphereMath { Seed, Stable };
+enum class SphereMath { Seed, Stable, Double };
 
 struct Sphere {
     Vec3 center{0.0f};
@@ -86,11 +88,28 @@ template <typename T>
 bool intersect_sphere(SphereMath math, const glm::vec<3, T>& origin,
                       const glm::vec<3, T>& direction, const glm::vec<3, T>& center, T radius,
                       T tnear, T tfar, T& t_out, bool& far_root) {
-    return math == SphereMath::Seed
-               ? intersect_sphere_seed(origin, direction, center, radius, tnear, tfar, t_out,
-                                       far_root)
-               : intersect_sphere_stable(origin, direction, center, radius, tnear, tfar, t_out,
+    switch (math) {
+        case SphereMath::Seed:
+            return intersect_sphere_seed(origin, direction, center, radius, tnear, tfar, t_out,
                                          far_root);
+        case SphereMath::Double: {
+            // Double evaluation; the window test is repeated in T so that a root that rounds
+            // onto tnear or tfar is not reported outside the caller's window.
+            double t = 0.0;
+            const bool hit = intersect_sphere_stable(
+                glm::dvec3(origin), glm::dvec3(direction), glm::dvec3(center),
+                static_cast<double>(radius), static_cast<double>(tnear),
+                static_cast<double>(tfar), t, far_root);
+            if (!hit) return false;
+            const T rounded = static_cast<T>(t);
+            if (!(rounded > tnear && rounded < tfar)) return false;
+            t_out = rounded;
+            return true;
+        }
+        case SphereMath::Stable: break;
+    }
+    return intersect_sphere_stable(origin, direction, center, radius, tnear, tfar, t_out,
+                                   far_root);
 }
 
 // Seed 000 eq. [9]: n = (P − Sc)/Sr, flipped for a far-root hit.

@@ -121,7 +121,11 @@ TEST_F(CliTest, BadFlagsAreRefusedWithoutOutput) {
         {"render --spp 0 -o x.png", "--spp: expected an integer"},
         {"render --threads 0 -o x.png", "--threads: expected an integer"},
         {"render --max-depth 1000 -o x.png", "--max-depth: expected an integer in [0, 64]"},
-        {"render --sphere-math fast -o x.png", "--sphere-math: expected 'stable' or 'seed'"},
+        {"render --sphere-math fast -o x.png", "--sphere-math: expected 'stable', 'seed' or 'double'"},
+        {"render --sphere-method mesh:9 -o x.png", "--sphere-method: expected auto, user"},
+        {"render --sphere-method bvh -o x.png", "got 'bvh'"},
+        {"render --max-error-px 0 -o x.png", "--max-error-px: expected a number > 0"},
+        {"render --max-error-px nan -o x.png", "--max-error-px: expected a number > 0"},
         {"render --range log -o x.png", "--range: expected 'clamp' or 'normalize'"},
         {"render -o", "-o: missing value"},
         {"render a.nff b.nff -o x.png", "unexpected argument 'b.nff'"},
@@ -188,6 +192,23 @@ TEST_F(CliTest, DegenerateCamerasAreRefusedWithTheirLine) {
         EXPECT_NE(r.output.find(c.message), std::string::npos) << r.output;
         EXPECT_FALSE(fs::exists(m_dir / "x.png"));
     }
+}
+
+TEST_F(CliTest, EverySphereMethodRendersAndStatsSayWhichRan) {
+    write("scene.nff", kSmallNff);
+    for (const char* method : {"bruteforce", "user", "embree-point", "mesh:2"}) {
+        const CommandResult r =
+            run(std::string("render scene.nff --stats -o m.exr --sphere-method ") + method);
+        EXPECT_EQ(r.exit_code, 0) << method << ": " << r.output;
+        EXPECT_NE(r.output.find(std::string("sphere method               ") + method),
+                  std::string::npos)
+            << r.output;
+    }
+    const CommandResult r = run("render scene.nff --stats -o m.exr --sphere-math double");
+    EXPECT_NE(r.output.find("user (double)"), std::string::npos) << r.output;
+    const CommandResult a = run("render scene.nff --stats -o m.exr");
+    EXPECT_NE(a.output.find("user (stable): user/stable: analytic"), std::string::npos)
+        << a.output;
 }
 
 TEST_F(CliTest, WidthAloneKeepsAspectRatio) {
