@@ -24,6 +24,7 @@ struct MaterialTextures {
     int32_t ks = kNoTexture;
     int32_t bump = kNoTexture;
     float bump_strength = 1.0f;
+    float ka_scale = 1.0f;  // multiplies a textured ka (the JSON default ka = 0.1 × kd's texture)
 
     bool any() const { return ka >= 0 || kd >= 0 || ks >= 0 || bump >= 0; }
 };

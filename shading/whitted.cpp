@@ -27,8 +27,9 @@ Material material_at(const Material& m, const std::vector<Texture>& textures,
     const Texture* ka = texture_at(textures, m.textures.ka);
     const Texture* kd = texture_at(textures, m.textures.kd);
     const Texture* ks = texture_at(textures, m.textures.ks);
-    local.ka = ka ? ka->color(position) : m.ka;
     local.kd = kd ? kd->color(position) : m.kd;
+    // ka often shares kd's texture (the default ka = 0.1 × kd): evaluate it once.
+    local.ka = ka ? m.textures.ka_scale * (ka == kd ? local.kd : ka->color(position)) : m.ka;
     local.ks = ks ? ks->color(position) : m.ks;
     local.shininess = m.shininess;
     local.specular_model = m.specular_model;
