@@ -5,6 +5,8 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/imageio.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -143,8 +145,15 @@ std::vector<float> display_pixels(const Film& film, const std::string& where,
         transform->setView(view.c_str());
         OCIO::ConstCPUProcessorRcPtr cpu =
             config->getProcessor(transform)->getDefaultCPUProcessor();
-        OCIO::PackedImageDesc image(rgba.data(), film.width(), film.height(), 4);
-        cpu->apply(image);
+        // Rows in parallel: a CPU processor's apply is thread-safe.
+        const int width = film.width();
+        tbb::parallel_for(tbb::blocked_range<int>(0, film.height(), 16),
+                          [&](const tbb::blocked_range<int>& rows) {
+                              OCIO::PackedImageDesc image(
+                                  rgba.data() + static_cast<size_t>(rows.begin()) * width * 4,
+                                  width, static_cast<long>(rows.size()), 4);
+                              cpu->apply(image);
+                          });
     } catch (const OCIO::Exception& e) {
         throw InputError(where,
                          "cannot apply OCIO view '" + display + "/" + view + "': " + e.what());
@@ -158,9 +167,14 @@ template <typename T>
 std::vector<T> quantise(const std::vector<float>& rgba, int channels) {
     const float scale = static_cast<float>(std::numeric_limits<T>::max());
     std::vector<T> out(rgba.size() / 4 * channels);
-    for (size_t p = 0; p < rgba.size() / 4; ++p)
-        for (int c = 0; c < channels; ++c)
-            out[p * channels + c] = static_cast<T>(std::lround(rgba[p * 4 + c] * scale));
+    // Values are in [0,1] here: adding 0.5 and truncating rounds to nearest (lround is slow).
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, rgba.size() / 4, 1 << 14),
+                      [&](const tbb::blocked_range<size_t>& pixels) {
+                          for (size_t p = pixels.begin(); p < pixels.end(); ++p)
+                              for (int c = 0; c < channels; ++c)
+                                  out[p * channels + c] =
+                                      static_cast<T>(rgba[p * 4 + c] * scale + 0.5f);
+                      });
     return out;
 }
 
@@ -258,6 +272,9 @@ void write_image(const Film& film, const std::string& path, const OutputOptions&
         write_atomically(path, spec, OIIO::TypeDesc::UINT16, pixels.data());
     } else {
         OIIO::ImageSpec spec(film.width(), film.height(), channels, OIIO::TypeDesc::UINT8);
+        // zlib level 1 instead of OIIO's 6: about 3x faster to write, files ~10% larger
+        // (measured in docs/performance.md); PNG stays lossless either way.
+        if (format == Format::Png) spec.attribute("png:compressionLevel", 1);
         add_metadata(spec, options);
         const std::vector<uint8_t> pixels = quantise<uint8_t>(rgba, channels);
         write_atomically(path, spec, OIIO::TypeDesc::UINT8, pixels.data());
