@@ -13,6 +13,7 @@
 
 #include "apps/mesh_loader.h"
 #include "core/error.h"
+#include "shading/texture.h"
 
 namespace rayo {
 namespace {
@@ -278,6 +279,13 @@ class SceneParser {
     void parse_camera(const Json& value, const std::string& pointer, CameraDesc& camera) const;
     void parse_render(const Json& value, const std::string& pointer, RenderSettings& s) const;
     void parse_materials(const Json& value, const std::string& pointer, ShadingScene& shading);
+    void parse_textures(const Json& value, const std::string& pointer, ShadingScene& shading);
+    Texture parse_texture(const Json& value, const std::string& pointer,
+                          const std::string& name) const;
+    ColorRamp parse_ramp(const Json& value, const std::string& pointer) const;
+    void parse_fbm(const Json& value, const std::string& pointer, FbmParams& fbm) const;
+    Vec3 colour_or_texture(const Json& object, const std::string& pointer, const char* key,
+                           const Vec3& fallback, int32_t& texture) const;
     Material parse_material(const Json& value, const std::string& pointer,
                             const std::string& name) const;
     Light parse_light(const Json& value, const std::string& pointer) const;
@@ -291,6 +299,7 @@ class SceneParser {
     std::string m_source;
     std::string m_base_dir;
     std::map<std::string, uint32_t> m_material_ids;
+    std::map<std::string, int32_t> m_texture_ids;  // name -> index in ShadingScene::textures
 };
 
 SceneDescription SceneParser::parse(const Json& root) {
@@ -301,8 +310,8 @@ SceneDescription SceneParser::parse(const Json& root) {
         fail("/rayo", "unsupported format version: expected 1, got " + describe(version));
     }
     check_keys(root, "",
-               {"rayo", "camera", "render", "background", "ambient_light", "materials", "lights",
-                "objects"});
+               {"rayo", "camera", "render", "background", "ambient_light", "textures", "materials",
+                "lights", "objects"});
 
     SceneDescription out;
     out.source = m_source;
@@ -320,6 +329,10 @@ SceneDescription SceneParser::parse(const Json& root) {
     out.shading.background = colour_or(root, "", "background", Vec3(0.0f));
     out.shading.ambient_light = colour_or(root, "", "ambient_light", Vec3(1.0f));
 
+    // Textures first: materials refer to them by name.
+    if (const Json* value = find(root, "textures")) {
+        parse_textures(*value, "/textures", out.shading);
+    }
     parse_materials(find(root, "materials") ? *find(root, "materials") : Json::object(),
                     "/materials", out.shading);
 
@@ -428,16 +441,171 @@ void SceneParser::parse_materials(const Json& value, const std::string& pointer,
     }
 }
 
+// A colour, or a string naming a texture of /textures (then `texture` gets its index).
+Vec3 SceneParser::colour_or_texture(const Json& object, const std::string& pointer, const char* key,
+                                    const Vec3& fallback, int32_t& texture) const {
+    const Json* value = find(object, key);
+    if (!value) return fallback;
+    if (!value->is_string()) return colour(*value, child(pointer, key));
+    const std::string name = value->get<std::string>();
+    const auto it = m_texture_ids.find(name);
+    if (it == m_texture_ids.end()) {
+        std::vector<std::string> known;
+        for (const auto& entry : m_texture_ids) known.push_back("\"" + entry.first + "\"");
+        fail(child(pointer, key),
+             "unknown texture \"" + name + "\" (expected a colour or a texture defined in " +
+                 "/textures" + (known.empty() ? ", which defines none" : ": " + join(known)) + ")");
+    }
+    texture = it->second;
+    return fallback;
+}
+
+// Textures (seed 003 ch. 3; docs/textures.md): name -> {type, scale, seed, ramp, parameters}.
+void SceneParser::parse_textures(const Json& value, const std::string& pointer,
+                                 ShadingScene& shading) {
+    require_object(value, pointer, "an object mapping texture names to textures");
+    for (const auto& item : value.items()) {
+        m_texture_ids[item.key()] = static_cast<int32_t>(shading.textures.size());
+        shading.textures.push_back(
+            parse_texture(item.value(), child(pointer, item.key()), item.key()));
+    }
+}
+
+void SceneParser::parse_fbm(const Json& value, const std::string& pointer, FbmParams& fbm) const {
+    if (const Json* v = find(value, "octaves")) {
+        fbm.octaves = integer(*v, child(pointer, "octaves"), 1, kMaxOctaves);
+    }
+    fbm.persistence = real_or(value, pointer, "persistence", fbm.persistence, Bound::Positive);
+    fbm.lacunarity = real_or(value, pointer, "lacunarity", fbm.lacunarity, Bound::Positive);
+}
+
+ColorRamp SceneParser::parse_ramp(const Json& value, const std::string& pointer) const {
+    if (!value.is_array() || value.empty()) {
+        fail(pointer, "expected a non-empty array of {\"position\": t, \"color\": c} stops, got " +
+                          describe(value));
+    }
+    std::vector<ColorStop> stops;
+    for (size_t i = 0; i < value.size(); ++i) {
+        const std::string stop_pointer = child(pointer, i);
+        require_object(value[i], stop_pointer, "a ramp stop {\"position\": t, \"color\": c}");
+        check_keys(value[i], stop_pointer, {"position", "color"});
+        ColorStop stop;
+        stop.position = real(require(value[i], stop_pointer, "position", "a number"),
+                             child(stop_pointer, "position"));
+        stop.color = colour(require(value[i], stop_pointer, "color", "a colour"),
+                            child(stop_pointer, "color"));
+        stops.push_back(stop);
+    }
+    return ColorRamp(std::move(stops));
+}
+
+Texture SceneParser::parse_texture(const Json& value, const std::string& pointer,
+                                   const std::string& name) const {
+    require_object(value, pointer, "a texture object");
+    const std::string type =
+        choice(require(value, pointer, "type", "a texture type"), child(pointer, "type"),
+               {"constant", "value", "perlin", "turbulence", "cellular", "marble", "warped",
+                "pool-bottom"});
+    Texture t = make_texture(type);
+    t.name = name;
+    if (type == "constant") {
+        check_keys(value, pointer, {"type", "color"});
+        std::get<ConstantMap>(t.map).color = colour_or(value, pointer, "color", Vec3(0.5f));
+        return t;
+    }
+    // Features below 1e-6 or above 1e6 world units would alias to noise or overflow the lattice.
+    t.scale = real_or(value, pointer, "scale", 1.0f, Bound::Positive);
+    if (!(t.scale >= 1e-6f && t.scale <= 1e6f)) {
+        fail(child(pointer, "scale"),
+             "expected a number in [1e-6, 1e6], got " + describe(*find(value, "scale")));
+    }
+    if (const Json* v = find(value, "seed")) {
+        t.seed = static_cast<uint32_t>(integer(*v, child(pointer, "seed"), 0, 2147483647));
+    }
+    if (const Json* v = find(value, "ramp")) t.ramp = parse_ramp(*v, child(pointer, "ramp"));
+    if (type == "value" || type == "perlin" || type == "turbulence") {
+        check_keys(value, pointer,
+                   {"type", "scale", "seed", "ramp", "octaves", "persistence", "lacunarity"});
+        FbmParams& fbm = type == "value"    ? std::get<ValueNoiseMap>(t.map).fbm
+                         : type == "perlin" ? std::get<PerlinMap>(t.map).fbm
+                                            : std::get<TurbulenceMap>(t.map).fbm;
+        parse_fbm(value, pointer, fbm);
+    } else if (type == "cellular") {
+        check_keys(value, pointer, {"type", "scale", "seed", "ramp", "metric", "feature"});
+        CellularMap& m = std::get<CellularMap>(t.map);
+        if (const Json* v = find(value, "metric")) {
+            const std::string metric =
+                choice(*v, child(pointer, "metric"), {"euclidean", "manhattan", "chebyshev"});
+            m.metric = metric == "manhattan"   ? DistanceMetric::Manhattan
+                       : metric == "chebyshev" ? DistanceMetric::Chebyshev
+                                               : DistanceMetric::Euclidean;
+        }
+        if (const Json* v = find(value, "feature")) {
+            const std::string f = choice(*v, child(pointer, "feature"),
+                                         {"f1", "f2", "f3", "f2-f1", "combination", "cell-id"});
+            m.feature = f == "f1"        ? CellularFeature::F1
+                        : f == "f2"      ? CellularFeature::F2
+                        : f == "f3"      ? CellularFeature::F3
+                        : f == "f2-f1"   ? CellularFeature::F2MinusF1
+                        : f == "cell-id" ? CellularFeature::CellId
+                                         : CellularFeature::Combination;
+        }
+    } else if (type == "marble") {
+        check_keys(value, pointer,
+                   {"type", "scale", "seed", "ramp", "octaves", "persistence", "lacunarity",
+                    "frequency", "distortion"});
+        MarbleMap& m = std::get<MarbleMap>(t.map);
+        parse_fbm(value, pointer, m.fbm);
+        m.frequency = real_or(value, pointer, "frequency", m.frequency);
+        m.distortion = real_or(value, pointer, "distortion", m.distortion, Bound::NonNegative);
+    } else if (type == "warped") {
+        check_keys(
+            value, pointer,
+            {"type", "scale", "seed", "ramp", "octaves", "persistence", "lacunarity", "warp"});
+        WarpedMap& m = std::get<WarpedMap>(t.map);
+        parse_fbm(value, pointer, m.fbm);
+        m.warp = real_or(value, pointer, "warp", m.warp, Bound::NonNegative);
+    } else {  // pool-bottom
+        check_keys(value, pointer, {"type", "scale", "seed", "ramp", "warp"});
+        PoolBottomMap& m = std::get<PoolBottomMap>(t.map);
+        m.warp = real_or(value, pointer, "warp", m.warp, Bound::NonNegative);
+    }
+    return t;
+}
+
 Material SceneParser::parse_material(const Json& value, const std::string& pointer,
                                      const std::string& name) const {
     require_object(value, pointer, "a material object");
     check_keys(value, pointer,
-               {"ka", "kd", "ks", "shininess", "specular", "reflect", "transmit", "ior"});
+               {"ka", "kd", "ks", "shininess", "specular", "reflect", "transmit", "ior", "bump"});
     Material m;
     m.name = name;
-    m.kd = colour_or(value, pointer, "kd", Vec3(0.8f));   // seed 000 eq. [22]
-    m.ka = colour_or(value, pointer, "ka", 0.1f * m.kd);  // seed 000 eq. [20]
-    m.ks = colour_or(value, pointer, "ks", Vec3(0.0f));   // seed 000 eq. [24]
+    // Each of kd, ka, ks is a colour or the name of a texture (seed 003 ch. 3).
+    m.kd = colour_or_texture(value, pointer, "kd", Vec3(0.8f), m.textures.kd);  // seed 000 [22]
+    if (find(value, "ka")) {
+        m.ka = colour_or_texture(value, pointer, "ka", Vec3(0.1f), m.textures.ka);  // seed 000 [20]
+    } else {
+        m.ka = 0.1f * m.kd;
+        if (m.textures.kd != kNoTexture) {  // the default ka = 0.1 × kd follows kd's texture
+            m.textures.ka = m.textures.kd;
+            m.textures.ka_scale = 0.1f;
+        }
+    }
+    m.ks = colour_or_texture(value, pointer, "ks", Vec3(0.0f), m.textures.ks);  // seed 000 [24]
+    if (const Json* v = find(value, "bump")) {  // seed 003's suggested extension
+        const std::string bump_pointer = child(pointer, "bump");
+        require_object(*v, bump_pointer, "a bump object {\"texture\": name, \"strength\": s}");
+        check_keys(*v, bump_pointer, {"texture", "strength"});
+        const Json& texture = require(*v, bump_pointer, "texture", "the name of a texture");
+        if (!texture.is_string()) {
+            fail(child(bump_pointer, "texture"),
+                 "expected the name of a texture, got " + describe(texture));
+        }
+        int32_t id = kNoTexture;
+        colour_or_texture(*v, bump_pointer, "texture", Vec3(0.0f), id);
+        m.textures.bump = id;
+        m.textures.bump_strength = real_or(*v, bump_pointer, "strength", 1.0f);
+    }
     m.shininess = real_or(value, pointer, "shininess", 32.0f, Bound::NonNegative);
     if (const Json* v = find(value, "specular")) {
         m.specular_model = choice(*v, child(pointer, "specular"), {"phong", "blinn"}) == "blinn"

@@ -9,7 +9,9 @@
 #include <cmath>
 #include <vector>
 
+#include "apps/json_loader.h"
 #include "apps/renderer.h"
+#include "apps/scene_loader.h"
 #include "core/error.h"
 
 namespace rayo {
@@ -246,6 +248,99 @@ TEST(TextureRender, TexturedSphereDiffersFromUntexturedAndUntexturedIsUnchanged)
     flat_bump.shading.textures.push_back(make_texture("constant"));
     flat_bump.shading.materials[0].textures.bump = 0;
     EXPECT_EQ(differing_pixels(base.film, render_scene(flat_bump, 2, false).film), 0);
+}
+
+// ---- The "textures" section of JSON scenes -----------------------------------------------
+
+std::string scene_with(const std::string& textures, const std::string& material) {
+    return R"({"rayo": 1, "textures": )" + textures + R"(, "materials": {"m": )" + material +
+           R"(}, "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "m"}]})";
+}
+
+std::string load_error(const std::string& text) {
+    try {
+        load_json_string(text, "t.json", ".");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(TextureJson, MaterialsNameTexturesForColoursAndBump) {
+    const SceneDescription d = load_json_string(
+        scene_with(R"({"stone": {"type": "cellular", "scale": 0.5, "seed": 4, "metric": "manhattan",
+                                  "feature": "f2-f1",
+                                  "ramp": [{"position": 1, "color": [1, 0, 0]},
+                                           {"position": 0, "color": 0.5}]},
+                       "ripples": {"type": "perlin", "octaves": 3, "persistence": 0.4}})",
+                   R"({"kd": "stone", "ks": "ripples",
+                       "bump": {"texture": "ripples", "strength": 0.25}})"),
+        "t.json", ".");
+    ASSERT_EQ(d.shading.textures.size(), 2u);
+    const Texture& stone = d.shading.textures[1];  // name order: ripples, stone
+    EXPECT_EQ(stone.name, "stone");
+    EXPECT_EQ(stone.scale, 0.5f);
+    EXPECT_EQ(stone.seed, 4u);
+    EXPECT_EQ(std::get<CellularMap>(stone.map).metric, DistanceMetric::Manhattan);
+    EXPECT_EQ(std::get<CellularMap>(stone.map).feature, CellularFeature::F2MinusF1);
+    EXPECT_EQ(stone.ramp.eval(0.0f), Vec3(0.5f));
+    EXPECT_EQ(stone.ramp.eval(1.0f), Vec3(1, 0, 0));
+    EXPECT_EQ(std::get<PerlinMap>(d.shading.textures[0].map).fbm.octaves, 3);
+    const Material& m = d.shading.materials[1];
+    EXPECT_EQ(m.textures.kd, 1);
+    EXPECT_EQ(m.textures.ks, 0);
+    EXPECT_EQ(m.textures.ka, 1);  // the default ka = 0.1 × kd follows kd's texture
+    EXPECT_FLOAT_EQ(m.textures.ka_scale, 0.1f);
+    EXPECT_EQ(m.textures.bump, 0);
+    EXPECT_FLOAT_EQ(m.textures.bump_strength, 0.25f);
+    EXPECT_FALSE(d.shading.materials[0].textures.any());  // "default" untouched
+}
+
+TEST(TextureJson, ErrorsNameTheJsonPointer) {
+    EXPECT_NE(load_error(scene_with(R"({})", R"({"kd": "nope"})"))
+                  .find("t.json#/materials/m/kd: unknown texture \"nope\""),
+              std::string::npos);
+    EXPECT_NE(load_error(scene_with(R"({"a": {"type": "plaid"}})", R"({})"))
+                  .find("t.json#/textures/a/type: expected one of"),
+              std::string::npos);
+    EXPECT_NE(load_error(scene_with(R"({"a": {"type": "perlin", "octaves": 40}})", R"({})"))
+                  .find("t.json#/textures/a/octaves: expected an integer in [1, 16]"),
+              std::string::npos);
+    EXPECT_NE(load_error(scene_with(R"({"a": {"type": "perlin", "scale": 0}})", R"({})"))
+                  .find("t.json#/textures/a/scale"),
+              std::string::npos);
+    EXPECT_NE(load_error(scene_with(R"({"a": {"type": "cellular", "warp": 1}})", R"({})"))
+                  .find("t.json#/textures/a/warp: unknown key"),
+              std::string::npos);
+    EXPECT_NE(load_error(scene_with(R"({"a": {"type": "value", "ramp": []}})", R"({})"))
+                  .find("t.json#/textures/a/ramp: expected a non-empty array"),
+              std::string::npos);
+    EXPECT_NE(load_error(scene_with(R"({"a": {"type": "value",
+                                               "ramp": [{"position": 0, "color": -1}]}})",
+                                    R"({})"))
+                  .find("t.json#/textures/a/ramp/0/color"),
+              std::string::npos);
+    EXPECT_NE(load_error(scene_with(R"({"a": {"type": "value"}})",
+                                    R"({"bump": {"texture": "a", "strength": "x"}})"))
+                  .find("t.json#/materials/m/bump/strength: expected a number"),
+              std::string::npos);
+    EXPECT_NE(load_error(scene_with(R"({"a": {"type": "value"}})", R"({"bump": {"strength": 1}})"))
+                  .find("t.json#/materials/m/bump/texture: missing required field"),
+              std::string::npos);
+}
+
+// The example scenes load and render: textured objects differ from their untextured selves.
+TEST(TextureJson, ExampleScenesLoadAndRender) {
+    for (const char* name : {"pool_bottom.json", "marble.json", "cells.json"}) {
+        SceneDescription d = load_scene_file(std::string(RAYO_SCENES_DIR) + "/" + name);
+        ASSERT_FALSE(d.shading.textures.empty()) << name;
+        d.scene.camera.width = 48;
+        d.scene.camera.height = 32;
+        const RenderResult textured = render_scene(d, 2, false);
+        for (Material& m : d.shading.materials) m.textures = MaterialTextures{};
+        const RenderResult plain = render_scene(d, 2, false);
+        EXPECT_GT(differing_pixels(textured.film, plain.film), 48 * 32 / 4) << name;
+    }
 }
 
 }  // namespace
