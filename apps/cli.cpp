@@ -49,6 +49,8 @@ render options:
   --sphere-math P          stable (default), seed (seed 000's algebraic form), double
   --max-error-px E         auto's error budget in pixels [0.5]
   --flat-spheres           mesh:N spheres with flat facets instead of smooth normals
+  --single-rays            trace camera and shadow rays one by one instead of as coherent
+                           Embree streams per tile (same image; for comparisons)
   --display D, --view V    OCIO display and view for PNG/TIFF/JPEG [config defaults]
   --range R                clamp (default) or normalize (divide by the image maximum)
   --half                   write EXR as half float
@@ -81,6 +83,7 @@ struct RenderArgs {
     std::optional<SphereRepresentation> sphere_method;
     std::optional<float> max_error_px;
     bool flat_spheres = false;
+    bool single_rays = false;
     OutputOptions output_options;
     bool quiet = false;
     bool stats = false;
@@ -132,6 +135,8 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             r.max_error_px = e;
         } else if (a == "--flat-spheres") {
             r.flat_spheres = true;
+        } else if (a == "--single-rays") {
+            r.single_rays = true;
         } else if (a == "--display") {
             r.output_options.display = value();
         } else if (a == "--view") {
@@ -184,6 +189,7 @@ void apply_overrides(const RenderArgs& args, SceneDescription& d) {
     if (args.sphere_math) d.settings.sphere_math = *args.sphere_math;
     if (args.sphere_method) d.settings.spheres = *args.sphere_method;
     if (args.flat_spheres) d.settings.spheres.mesh_smooth = false;
+    if (args.single_rays) d.settings.coherent = false;
     if (args.max_error_px) d.settings.max_error_px = *args.max_error_px;
 }
 
@@ -218,6 +224,9 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "  threads                     " << r.threads << "\n"
         << "  sphere method               " << sphere_method_name(r.spheres.spheres) << " ("
         << sphere_math_name(r.spheres.math) << "): " << r.spheres.reason << "\n"
+        << "  ray batches                 "
+        << (r.coherent ? "coherent Embree streams per tile (camera, shadow)" : "single rays")
+        << "\n"
         << "  primitives                  " << r.primitives << " (" << d.scene.spheres.size()
         << " spheres, " << d.scene.cones.size() << " cones, " << d.scene.triangle_count()
         << " triangles)\n"

@@ -74,6 +74,12 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     TileSettings tiles;
     tiles.spp = description.settings.spp;
     tiles.tile_size = description.settings.tile_size;
+    // Embree's built-in sphere kernel rounds differently in its packet and single-ray forms
+    // (5% of balls_3's pixels change, docs/performance.md), so embree-point stays on single rays
+    // to keep the promise that the coherent path changes no bits.
+    tiles.coherent = description.settings.coherent &&
+                     result.spheres.spheres.method != SphereMethod::EmbreePoint;
+    result.coherent = tiles.coherent;
 
     start = std::chrono::steady_clock::now();
     {

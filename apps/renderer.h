@@ -16,6 +16,7 @@ struct RenderResult {
     size_t primitives = 0;
     int threads = 0;
     SphereChoice spheres;  // the sphere method and math that ran, and why
+    bool coherent = false;  // camera/shadow rays traced as per-tile Embree streams
 };
 
 // threads = 0: all cores. Throws InputError for an invalid camera.

@@ -19,6 +19,7 @@ struct RenderSettings {
     SphereMath sphere_math = SphereMath::Stable;
     SphereRepresentation spheres{SphereMethod::Auto};  // --sphere-method; auto by default
     float max_error_px = 0.5f;                         // auto's error budget, in pixels
+    bool coherent = true;  // tiles' camera and shadow rays as Embree streams (--single-rays: no)
     WhittedSettings whitted;
 };
 

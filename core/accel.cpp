@@ -1,5 +1,6 @@
 #include "core/accel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -200,6 +201,15 @@ RTCRay make_rtc_ray(const Ray& ray) {
     return r;
 }
 
+RTCRayHit make_rtc_rayhit(const Ray& ray) {
+    RTCRayHit rayhit;
+    rayhit.ray = make_rtc_ray(ray);
+    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    return rayhit;
+}
+
 }  // namespace
 
 Accel::Accel(const Scene& scene, const AccelOptions& options)
@@ -382,14 +392,54 @@ void Accel::fill_sphere_hit(const Ray& ray, float t, uint32_t sphere, SurfaceHit
 bool Accel::intersect(const Ray& ray, SurfaceHit& hit) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRayHit rayhit;
-    rayhit.ray = make_rtc_ray(ray);
-    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
-    rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit rayhit = make_rtc_rayhit(ray);
     rtcIntersect1(m_rtc_scene, &context, &rayhit);
-    const bool embree_hit = rayhit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    return finish_hit(ray, rayhit, hit);
+}
 
+void Accel::intersect_coherent(const Ray* rays, int count, SurfaceHit* hits, bool* found) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    RTCRayHit batch[kCoherentBatch];
+    for (int first = 0; first < count; first += kCoherentBatch) {
+        const int n = std::min(kCoherentBatch, count - first);
+        for (int i = 0; i < n; ++i) batch[i] = make_rtc_rayhit(rays[first + i]);
+        rtcIntersect1M(m_rtc_scene, &context, batch, static_cast<unsigned>(n), sizeof(RTCRayHit));
+        for (int i = 0; i < n; ++i) {
+            found[first + i] = finish_hit(rays[first + i], batch[i], hits[first + i]);
+        }
+    }
+}
+
+void Accel::occluded_coherent(const Ray* rays, int count, bool* occluded) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    RTCRay batch[kCoherentBatch];
+    for (int first = 0; first < count; first += kCoherentBatch) {
+        const int n = std::min(kCoherentBatch, count - first);
+        for (int i = 0; i < n; ++i) batch[i] = make_rtc_ray(rays[first + i]);
+        rtcOccluded1M(m_rtc_scene, &context, batch, static_cast<unsigned>(n), sizeof(RTCRay));
+        for (int i = 0; i < n; ++i) {
+            occluded[first + i] =
+                batch[i].tfar < 0.0f || occluded_by_brute_force_spheres(rays[first + i]);
+        }
+    }
+}
+
+bool Accel::occluded_by_brute_force_spheres(const Ray& ray) const {
+    if (m_options.spheres.method != SphereMethod::BruteForce || m_scene.spheres.empty()) {
+        return false;
+    }
+    uint32_t sphere;
+    float t;
+    return nearest_sphere_brute_force(ray, ray.tfar, sphere, t);
+}
+
+// The hit record of an Embree result, with the brute-force spheres (if any) tested up to it.
+bool Accel::finish_hit(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& hit) const {
+    const bool embree_hit = rayhit.hit.geomID != RTC_INVALID_GEOMETRY_ID;
     if (m_options.spheres.method == SphereMethod::BruteForce && !m_scene.spheres.empty()) {
         uint32_t sphere;
         float t;
@@ -477,11 +527,7 @@ bool Accel::intersect(const Ray& ray, SurfaceHit& hit) const {
 }
 
 bool Accel::occluded(const Ray& ray) const {
-    if (m_options.spheres.method == SphereMethod::BruteForce && !m_scene.spheres.empty()) {
-        uint32_t sphere;
-        float t;
-        if (nearest_sphere_brute_force(ray, ray.tfar, sphere, t)) return true;
-    }
+    if (occluded_by_brute_force_spheres(ray)) return true;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay r = make_rtc_ray(ray);

@@ -47,6 +47,13 @@ public:
     // True when anything lies on the ray within (tnear, tfar).
     bool occluded(const Ray& ray) const;
 
+    // Coherent batches (a tile's camera rays, its shadow rays toward one light) go through
+    // Embree ray streams (rtcIntersect1M/rtcOccluded1M, COHERENT flag), which traverse them as
+    // packets. Ray by ray the results equal intersect()/occluded() (tests/accel_test.cpp).
+    void intersect_coherent(const Ray* rays, int count, SurfaceHit* hits, bool* found) const;
+    void occluded_coherent(const Ray* rays, int count, bool* occluded) const;
+    static constexpr int kCoherentBatch = 64;  // rays per stream call (an 8×8 tile)
+
     const AccelOptions& options() const { return m_options; }
     RTCScene rtc_scene() const { return m_rtc_scene; }  // for raw-Embree baselines
     size_t primitive_count() const { return m_primitive_count; }
@@ -62,6 +69,8 @@ private:
     void add_sphere_geometry();
     // Nearest sphere in (tnear, tfar) by testing every sphere (SphereMethod::BruteForce).
     bool nearest_sphere_brute_force(const Ray& ray, float tfar, uint32_t& index, float& t) const;
+    bool occluded_by_brute_force_spheres(const Ray& ray) const;
+    bool finish_hit(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& hit) const;
     void fill_sphere_hit(const Ray& ray, float t, uint32_t sphere, SurfaceHit& hit) const;
 
     const Scene& m_scene;

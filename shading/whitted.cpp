@@ -1,5 +1,6 @@
 #include "shading/whitted.h"
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 
@@ -62,64 +63,82 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const Vec3& weight,
     return shade(ray, hit, depth, weight, counters);
 }
 
-Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth, const Vec3& weight,
-                              RayCounters& counters) const {
+WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(const Ray& ray,
+                                                           const SurfaceHit& hit) const {
+    ShadingPoint p;
     const Material& base = m_scene.materials[hit.material];
     // Which side the ray arrived on: seed 000 flips the normal for hits from inside (t1).
-    const bool entering = glm::dot(ray.direction, hit.geometric_normal) < 0.0f;
-    const Vec3 facing_geometric = entering ? hit.geometric_normal : -hit.geometric_normal;
-    Vec3 normal = entering ? hit.shading_normal : -hit.shading_normal;
+    p.entering = glm::dot(ray.direction, hit.geometric_normal) < 0.0f;
+    p.facing_geometric = p.entering ? hit.geometric_normal : -hit.geometric_normal;
+    p.normal = p.entering ? hit.shading_normal : -hit.shading_normal;
+    p.base = &base;
     // Procedural textures (seed 003 ch. 3): untextured materials skip this and are used as is.
-    std::optional<Material> textured;
     if (base.textures.any()) {
-        textured.emplace(material_at(base, m_scene.textures, hit.position));
+        p.textured = material_at(base, m_scene.textures, hit.position);
+        p.is_textured = true;
         if (const Texture* bump = texture_at(m_scene.textures, base.textures.bump)) {
-            normal = bump_normal(*bump, base.textures.bump_strength, hit.position, normal,
-                                 facing_geometric);
+            p.normal = bump_normal(*bump, base.textures.bump_strength, hit.position, p.normal,
+                                   p.facing_geometric);
         }
     }
-    const Material& material = textured ? *textured : base;
-    const Vec3 to_eye = -ray.direction;
+    p.to_eye = -ray.direction;
+    p.shadow_origin = offset_ray_origin(hit, p.facing_geometric);
+    return p;
+}
 
+bool WhittedIntegrator::light_sample(const ShadingPoint& p, const SurfaceHit& hit,
+                                     const Light& light, Ray& shadow, Vec3& to_light,
+                                     Vec3& light_radiance) const {
+    float light_distance;
+    if (const auto* point = std::get_if<PointLight>(&light)) {
+        const Vec3 offset = point->position - hit.position;
+        light_distance = glm::length(offset);
+        if (!(light_distance > 0.0f)) return false;
+        to_light = offset / light_distance;
+        light_radiance =
+            point->color * point->intensity * point->attenuation.factor(light_distance);
+    } else {
+        const auto& directional = std::get<DirectionalLight>(light);
+        to_light = -directional.direction;
+        light_distance = std::numeric_limits<float>::infinity();
+        light_radiance = directional.color * directional.intensity;
+    }
+    // Lights behind the surface (as seen from the arriving side) contribute nothing.
+    if (glm::dot(p.normal, to_light) <= 0.0f || glm::dot(p.facing_geometric, to_light) <= 0.0f) {
+        return false;
+    }
+    shadow.origin = p.shadow_origin;
+    shadow.direction = to_light;
+    shadow.tnear = 0.0f;
+    // Stop just short of a point light so the light's own position is never "in the way".
+    shadow.tfar = std::isfinite(light_distance)
+                      ? glm::dot(hit.position - p.shadow_origin, to_light) +
+                            light_distance * (1.0f - 1e-5f)
+                      : std::numeric_limits<float>::infinity();
+    return true;
+}
+
+Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth, const Vec3& weight,
+                              RayCounters& counters) const {
+    const ShadingPoint p = prepare(ray, hit);
     // Local model, seed 003 eq. 2.1: I = ka·Ia + Σ f(d)·Il·[kd(n·l) + ks(…)^n], with a shadow ray
     // per light (seed 004).
-    Vec3 color = material.ka * m_scene.ambient_light;
-    const Vec3 shadow_origin = offset_ray_origin(hit, facing_geometric);
+    Vec3 color = p.material().ka * m_scene.ambient_light;
     for (const Light& light : m_scene.lights) {
-        Vec3 to_light;
-        float light_distance;
-        Vec3 light_radiance;
-        if (const auto* point = std::get_if<PointLight>(&light)) {
-            const Vec3 offset = point->position - hit.position;
-            light_distance = glm::length(offset);
-            if (!(light_distance > 0.0f)) continue;
-            to_light = offset / light_distance;
-            light_radiance =
-                point->color * point->intensity * point->attenuation.factor(light_distance);
-        } else {
-            const auto& directional = std::get<DirectionalLight>(light);
-            to_light = -directional.direction;
-            light_distance = std::numeric_limits<float>::infinity();
-            light_radiance = directional.color * directional.intensity;
-        }
-        // Lights behind the surface (as seen from the arriving side) contribute nothing.
-        if (glm::dot(normal, to_light) <= 0.0f || glm::dot(facing_geometric, to_light) <= 0.0f) {
-            continue;
-        }
         Ray shadow;
-        shadow.origin = shadow_origin;
-        shadow.direction = to_light;
-        shadow.tnear = 0.0f;
-        // Stop just short of a point light so the light's own position is never "in the way".
-        shadow.tfar =
-            std::isfinite(light_distance)
-                ? glm::dot(hit.position - shadow_origin, to_light) + light_distance * (1.0f - 1e-5f)
-                : std::numeric_limits<float>::infinity();
+        Vec3 to_light, light_radiance;
+        if (!light_sample(p, hit, light, shadow, to_light, light_radiance)) continue;
         ++counters.shadow;
         if (m_accel.occluded(shadow)) continue;
-        color += phong_direct(material, normal, to_light, to_eye, light_radiance);
+        color += phong_direct(p.material(), p.normal, to_light, p.to_eye, light_radiance);
     }
+    return add_transport(ray, hit, p, depth, weight, color, counters);
+}
 
+Vec3 WhittedIntegrator::add_transport(const Ray& ray, const SurfaceHit& hit,
+                                      const ShadingPoint& p, int depth, const Vec3& weight,
+                                      const Vec3& color, RayCounters& counters) const {
+    const Material& material = p.material();
     if (!material.reflective() && !material.transmissive()) return color;
     if (depth >= m_settings.max_depth) {
         ++counters.depth_cut;
@@ -131,13 +150,13 @@ Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth, 
     Vec3 reflect_weight = material.reflect;
     Vec3 transmit_color(0.0f);
     if (material.transmissive()) {
-        const float n21 = entering ? material.ior : 1.0f / material.ior;
-        const std::optional<Vec3> refracted = refract(ray.direction, normal, n21);
+        const float n21 = p.entering ? material.ior : 1.0f / material.ior;
+        const std::optional<Vec3> refracted = refract(ray.direction, p.normal, n21);
         if (refracted) {
             const Vec3 child_weight = weight * material.transmit;
             if (max_component(child_weight) >= m_settings.min_contribution) {
                 Ray child;
-                child.origin = offset_ray_origin(hit, -facing_geometric);
+                child.origin = offset_ray_origin(hit, -p.facing_geometric);
                 child.direction = glm::normalize(*refracted);
                 ++counters.refraction;
                 transmit_color =
@@ -155,8 +174,8 @@ Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth, 
         const Vec3 child_weight = weight * reflect_weight;
         if (max_component(child_weight) >= m_settings.min_contribution) {
             Ray child;
-            child.origin = shadow_origin;
-            child.direction = glm::normalize(reflect(ray.direction, normal));
+            child.origin = p.shadow_origin;
+            child.direction = glm::normalize(reflect(ray.direction, p.normal));
             ++counters.reflection;
             reflect_color = reflect_weight * trace(child, depth + 1, child_weight, counters);
         } else {
@@ -164,6 +183,59 @@ Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth, 
         }
     }
     return color + reflect_color + transmit_color;
+}
+
+void WhittedIntegrator::radiance_coherent(const Ray* rays, int count, Vec3* radiance,
+                                          RayCounters& counters) const {
+    // The same arithmetic as radiance() ray by ray, reordered so that each stage's rays go to
+    // Embree together: camera rays, then the shadow rays toward each light in turn.
+    constexpr int kBatch = Accel::kCoherentBatch;
+    SurfaceHit hits[kBatch];
+    bool found[kBatch];
+    ShadingPoint points[kBatch];
+    Vec3 color[kBatch];
+    Ray shadows[kBatch];
+    Vec3 to_lights[kBatch], light_radiances[kBatch];
+    int shadow_pixel[kBatch];
+    bool occluded[kBatch];
+    for (int first = 0; first < count; first += kBatch) {
+        const int n = std::min(kBatch, count - first);
+        const Ray* batch = rays + first;
+        counters.camera += static_cast<uint64_t>(n);
+        m_accel.intersect_coherent(batch, n, hits, found);
+        for (int i = 0; i < n; ++i) {
+            if (!found[i]) continue;
+            points[i] = prepare(batch[i], hits[i]);
+            color[i] = points[i].material().ka * m_scene.ambient_light;
+        }
+        for (const Light& light : m_scene.lights) {
+            int shadow_count = 0;
+            for (int i = 0; i < n; ++i) {
+                if (!found[i]) continue;
+                const int k = shadow_count;
+                if (!light_sample(points[i], hits[i], light, shadows[k], to_lights[k],
+                                  light_radiances[k])) {
+                    continue;
+                }
+                shadow_pixel[k] = i;
+                ++shadow_count;
+            }
+            counters.shadow += static_cast<uint64_t>(shadow_count);
+            m_accel.occluded_coherent(shadows, shadow_count, occluded);
+            for (int k = 0; k < shadow_count; ++k) {
+                if (occluded[k]) continue;
+                const ShadingPoint& p = points[shadow_pixel[k]];
+                color[shadow_pixel[k]] += phong_direct(p.material(), p.normal, to_lights[k],
+                                                       p.to_eye, light_radiances[k]);
+            }
+        }
+        for (int i = 0; i < n; ++i) {
+            radiance[first + i] =
+                found[i] ? add_transport(batch[i], hits[i], points[i], 0, Vec3(1.0f), color[i],
+                                         counters)
+                         : m_scene.background;
+        }
+    }
 }
 
 }  // namespace rayo

@@ -20,8 +20,32 @@ public:
 
     // Radiance arriving along `ray` (a camera ray: counts it as such).
     Vec3 radiance(const Ray& ray, RayCounters& counters) const;
+    // The same for a batch of coherent camera rays (a tile's): identical values ray by ray,
+    // with the camera and shadow rays traced as Embree streams.
+    void radiance_coherent(const Ray* rays, int count, Vec3* radiance,
+                           RayCounters& counters) const;
 
 private:
+    // What shading a hit needs, computed once: the side the ray arrived on, normals after
+    // bump mapping, the (textured) material, the spawned-ray origin.
+    struct ShadingPoint {
+        const Material* base = nullptr;  // the scene's material
+        Material textured;               // its coefficients at the hit, when it has textures
+        bool is_textured = false;
+        bool entering = true;
+        Vec3 facing_geometric{0.0f}, normal{0.0f}, to_eye{0.0f}, shadow_origin{0.0f};
+        // Not a stored pointer to `textured`: points are copied and must stay valid.
+        const Material& material() const { return is_textured ? textured : *base; }
+    };
+    ShadingPoint prepare(const Ray& ray, const SurfaceHit& hit) const;
+    // The shadow ray toward `light`, the unit direction to it and its radiance at the hit;
+    // false when the light is behind the surface.
+    bool light_sample(const ShadingPoint& p, const SurfaceHit& hit, const Light& light,
+                      Ray& shadow, Vec3& to_light, Vec3& light_radiance) const;
+    // `color` (the local model) plus the reflected and refracted children (seed 001).
+    Vec3 add_transport(const Ray& ray, const SurfaceHit& hit, const ShadingPoint& p, int depth,
+                       const Vec3& weight, const Vec3& color, RayCounters& counters) const;
+
     Vec3 trace(const Ray& ray, int depth, const Vec3& weight, RayCounters& counters) const;
     Vec3 shade(const Ray& ray, const SurfaceHit& hit, int depth, const Vec3& weight,
                RayCounters& counters) const;
