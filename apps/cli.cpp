@@ -1,10 +1,11 @@
 #include "apps/cli.h"
 
+#include <algorithm>
 #include <charconv>
-#include <cstdlib>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
 #include <map>
@@ -20,6 +21,7 @@
 #include "core/error.h"
 #include "core/image_output.h"
 #include "core/progress.h"
+#include "shading/texture.h"
 
 namespace rayo {
 namespace {
@@ -34,6 +36,7 @@ const char* const kUsage = R"(rayo — a Whitted ray tracer (Embree + TBB + Open
 usage:
   rayo render [SCENE] [options]   render SCENE (.json or .nff); the built-in scene without one
   rayo info SCENE                 load SCENE and print what it contains
+  rayo texture NAME [options]     write a procedural texture flat (the plane z = 0)
   rayo --help | --version
 
 render options:
@@ -56,6 +59,13 @@ render options:
   --half                   write EXR as half float
   --quiet                  no progress bar and no summary line
   --stats                  print the full statistics table
+
+texture options (NAME: constant, value, perlin, turbulence, cellular, marble, warped,
+pool-bottom; docs/textures.md):
+  -o, --output FILE        output image, as for render [NAME.png]
+  --size WxH               image size in pixels [512x512]; 64 pixels per world unit
+  --scale S                world units per feature, 1e-6..1e6 [1: the seed's 64-pixel cells]
+  --seed N                 0..2147483647 [0]
 
 The OCIO config is $OCIO when set, else rayo's own (sRGB display: sRGB, ACES 1.0 SDR-video, Raw).
 )";
@@ -301,6 +311,69 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
     return 0;
 }
 
+// `rayo texture NAME [-o OUT] [--size WxH] [--scale S] [--seed N]` (seed 003 ch. 3 maps).
+int run_texture(const std::vector<std::string>& args, std::ostream& out) {
+    std::optional<std::string> name, output;
+    int width = 512, height = 512;
+    std::optional<float> scale;
+    uint32_t seed = 0;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) throw UsageError(a + ": missing value");
+            return args[++i];
+        };
+        if (a == "-o" || a == "--output") {
+            output = value();
+        } else if (a == "--size") {
+            const std::string& v = value();
+            const size_t x = v.find('x');
+            if (x == std::string::npos) {
+                throw UsageError(a + ": expected WxH (e.g. 512x512), got '" + v + "'");
+            }
+            width = parse_int(a + " width", v.substr(0, x), 1, kMaxImageSide);
+            height = parse_int(a + " height", v.substr(x + 1), 1, kMaxImageSide);
+        } else if (a == "--scale") {
+            const std::string& v = value();
+            char* end = nullptr;
+            const double s = std::strtod(v.c_str(), &end);
+            if (v.empty() || end != v.c_str() + v.size() || !(s >= 1e-6 && s <= 1e6)) {
+                throw UsageError(a + ": expected a number in [1e-6, 1e6], got '" + v + "'");
+            }
+            scale = static_cast<float>(s);
+        } else if (a == "--seed") {
+            seed = static_cast<uint32_t>(parse_int(a, value(), 0, 2147483647));
+        } else if (!a.empty() && a[0] == '-') {
+            throw UsageError("unknown option '" + a + "' (see rayo --help)");
+        } else if (!name) {
+            name = a;
+        } else {
+            throw UsageError("unexpected argument '" + a + "': one texture per command");
+        }
+    }
+    const std::vector<std::string>& names = texture_kind_names();
+    std::string known;
+    for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+    if (!name) throw UsageError("texture: expected a texture name (" + known + ")");
+    if (std::find(names.begin(), names.end(), *name) == names.end()) {
+        throw UsageError("texture: unknown texture '" + *name + "' (expected one of: " + known +
+                         ")");
+    }
+    Texture texture = make_texture(*name);
+    if (scale) texture.scale = *scale;
+    texture.seed = seed;
+    const Film film = texture_image(texture, width, height);
+    const std::string path = output ? *output : *name + ".png";
+    OutputOptions options;
+    options.metadata["rayo:texture"] = *name;
+    options.metadata["rayo:texture_scale"] = std::to_string(texture.scale);
+    options.metadata["rayo:texture_seed"] = std::to_string(seed);
+    write_image(film, path, options);
+    out << "rayo: " << path << " " << width << "x" << height << " texture " << *name << " scale "
+        << texture.scale << " seed " << seed << "\n";
+    return 0;
+}
+
 int run_info(const std::vector<std::string>& args, std::ostream& out) {
     if (args.size() != 1) throw UsageError("info: expected exactly one scene file");
     const SceneDescription d = load_scene_file(args[0]);
@@ -346,6 +419,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
         }
         if (command == "render") return run_render(args, out, err);
         if (command == "info") return run_info(args, out);
+        if (command == "texture") return run_texture(args, out);
         throw UsageError("unknown command '" + command + "' (see rayo --help)");
     } catch (const UsageError& e) {
         err << "rayo: error: " << e.what() << "\n";
