@@ -1,0 +1,37 @@
+# libFuzzer targets (issue 5): one executable per scene reader, fuzz/<reader>_fuzz.cpp, built with
+# clang's -fsanitize=fuzzer. The loaders (rayo_app) get coverage instrumentation so libFuzzer can
+# steer; core and shading do not, which keeps the sanitizer test run that shares this build fast.
+# Each fuzzer is a ctest entry `fuzz_<reader>` that runs for RAYO_FUZZ_SECONDS over a copy of its
+# seed corpus fuzz/corpus/<reader>/ (cmake/run_fuzzer.cmake); fuzz/run.sh runs them longer.
+if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+  message(FATAL_ERROR "RAYO_FUZZ needs clang (libFuzzer): configure with the asan preset or "
+                      "-DCMAKE_CXX_COMPILER=clang++")
+endif()
+
+set(RAYO_FUZZ_SECONDS 20 CACHE STRING "Seconds each fuzzer runs as a ctest entry")
+
+target_compile_options(rayo_app PRIVATE -fsanitize=fuzzer-no-link)
+
+file(GLOB RAYO_FUZZ_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/*_fuzz.cpp)
+foreach(src ${RAYO_FUZZ_SOURCES})
+  get_filename_component(name ${src} NAME_WE)  # e.g. nff_fuzz
+  string(REGEX REPLACE "_fuzz$" "" reader ${name})
+  add_executable(${name} ${src})
+  target_compile_options(${name} PRIVATE -fsanitize=fuzzer)
+  target_link_options(${name} PRIVATE -fsanitize=fuzzer)
+  target_link_libraries(${name} PRIVATE rayo_app)
+  set(dict ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/${reader}.dict)
+  if(NOT EXISTS ${dict})
+    set(dict "")
+  endif()
+  add_test(NAME fuzz_${reader}
+           COMMAND ${CMAKE_COMMAND}
+                   -DFUZZER=$<TARGET_FILE:${name}>
+                   -DCORPUS=${CMAKE_CURRENT_SOURCE_DIR}/fuzz/corpus/${reader}
+                   -DWORK=${CMAKE_CURRENT_BINARY_DIR}/fuzz/${reader}
+                   -DSECONDS=${RAYO_FUZZ_SECONDS}
+                   -DDICT=${dict}
+                   -P ${CMAKE_CURRENT_SOURCE_DIR}/cmake/run_fuzzer.cmake)
+  math(EXPR timeout "${RAYO_FUZZ_SECONDS} + 120")
+  set_tests_properties(fuzz_${reader} PROPERTIES TIMEOUT ${timeout} LABELS fuzz)
+endforeach()

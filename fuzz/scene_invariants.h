@@ -1,0 +1,91 @@
+#pragma once
+// The fuzzers' oracle (issue 5): what a scene loader promises about a scene it accepted. Bad input
+// must be refused with rayo::InputError; anything accepted must be finite, in range and safe to
+// index, or the renderer would crash or write NaN. A violation aborts so libFuzzer keeps the input.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "apps/scene_description.h"
+#include "core/camera.h"
+#include "core/error.h"
+
+namespace rayo::fuzz {
+
+[[noreturn]] inline void violated(const std::string& what) {
+    std::fprintf(stderr, "scene invariant violated: %s\n", what.c_str());
+    std::abort();
+}
+
+inline void expect(bool ok, const std::string& what) {
+    if (!ok) violated(what);
+}
+
+inline bool finite(float v) {
+    return std::isfinite(v);
+}
+inline bool finite(const Vec3& v) {
+    return finite(v.x) && finite(v.y) && finite(v.z);
+}
+
+inline void check_mesh(const TriangleMesh& mesh, size_t materials, const std::string& name) {
+    for (const Vec3& p : mesh.positions) expect(finite(p), name + ": non-finite position");
+    expect(mesh.normals.empty() || mesh.normals.size() == mesh.positions.size(),
+           name + ": normal count differs from position count");
+    for (const Vec3& n : mesh.normals) expect(finite(n), name + ": non-finite normal");
+    expect(mesh.materials.size() == mesh.triangles.size(), name + ": material ids per triangle");
+    for (const auto& t : mesh.triangles) {
+        for (uint32_t i : t) expect(i < mesh.positions.size(), name + ": index past positions");
+    }
+    for (uint32_t m : mesh.materials) expect(m < materials, name + ": material id out of range");
+}
+
+// Checks a SceneDescription a loader returned (aborts on a violation).
+inline void check_scene(const SceneDescription& d) {
+    const size_t materials = d.shading.materials.size();
+    for (const Sphere& s : d.scene.spheres) {
+        expect(finite(s.center) && finite(s.radius) && s.radius > 0.0f, "sphere geometry");
+        expect(s.material < materials, "sphere material id out of range");
+    }
+    for (const Cone& c : d.scene.cones) {
+        expect(finite(c.base) && finite(c.apex) && finite(c.base_radius) && finite(c.apex_radius) &&
+                   c.base_radius >= 0.0f && c.apex_radius >= 0.0f,
+               "cone geometry");
+        expect(c.material < materials, "cone material id out of range");
+    }
+    for (size_t i = 0; i < d.scene.meshes.size(); ++i) {
+        check_mesh(d.scene.meshes[i], materials, "mesh " + std::to_string(i));
+    }
+    for (const Material& m : d.shading.materials) {
+        expect(finite(m.ka) && finite(m.kd) && finite(m.ks) && finite(m.reflect) &&
+                   finite(m.transmit) && finite(m.shininess) && finite(m.ior) && m.ior > 0.0f,
+               "material '" + m.name + "' has a non-finite or non-positive value");
+    }
+    for (const Light& l : d.shading.lights) {
+        if (const auto* p = std::get_if<PointLight>(&l)) {
+            expect(finite(p->position) && finite(p->color) && finite(p->intensity), "point light");
+        } else if (const auto* dl = std::get_if<DirectionalLight>(&l)) {
+            expect(finite(dl->direction) && finite(dl->color) && finite(dl->intensity),
+                   "directional light");
+        }
+    }
+    expect(finite(d.shading.ambient_light) && finite(d.shading.background), "ambient/background");
+    expect(d.settings.spp >= 1 && d.settings.tile_size >= 1, "spp/tile size");
+    expect(d.settings.whitted.max_depth >= 0 && d.settings.whitted.max_depth <= 64, "max depth");
+    expect(finite(d.settings.whitted.min_contribution), "min contribution");
+    // The camera may still be refused here (the CLI reports that as an InputError), but it
+    // must not crash, and one it accepts must respect the resolution limits.
+    try {
+        const Camera camera = Camera::create(d.scene.camera, d.source + "#/camera");
+        expect(camera.width() >= 1 && camera.height() >= 1 && camera.width() <= kMaxImageSide &&
+                   camera.height() <= kMaxImageSide &&
+                   static_cast<long long>(camera.width()) * camera.height() <= kMaxImagePixels,
+               "camera resolution outside the limits");
+        const Ray ray = camera.generate_ray(0.0f, 0.0f);
+        expect(finite(ray.origin) && finite(ray.direction), "camera ray is not finite");
+    } catch (const InputError&) {
+    }
+}
+
+}  // namespace rayo::fuzz
