@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -19,6 +20,7 @@
 #include <set>
 #include <sstream>
 #include <utility>
+#include <vector>
 
 #include "core/error.h"
 
@@ -145,6 +147,57 @@ size_t find_bad_face_line(const std::string& path) {
     return 0;
 }
 
+// tinyobjloader reads a missing coordinate as 0 and "inf" or "1e39" as whatever its parser
+// makes of them, and drops faces of fewer than 3 vertices without a word; so the loader checks
+// the statements it uses first, each error naming "path:line" (issue 5, the bad-input catalogue).
+void check_obj_text(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::string line;
+    size_t number = 0;
+    auto fail = [&](const std::string& message) {
+        throw InputError(path + ":" + std::to_string(number), message);
+    };
+    auto check_number = [&](const std::string& tag, const std::string& token) {
+        const bool number_chars = token.find_first_not_of("0123456789+-.eE") == std::string::npos;
+        char* end = nullptr;
+        const double value = number_chars ? std::strtod(token.c_str(), &end) : 0.0;
+        if (!number_chars || token.empty() || end != token.c_str() + token.size() ||
+            !std::isfinite(value) || std::fabs(value) > std::numeric_limits<float>::max()) {
+            fail("'" + tag + "': expected a finite number (in float range), got '" + token + "'");
+        }
+    };
+    while (std::getline(file, line)) {
+        ++number;
+        for (const char c : line) {
+            const auto byte = static_cast<unsigned char>(c);
+            if (byte < 0x20 && c != '\t' && c != '\r' && c != '\f' && c != '\v') {
+                char hex[8];
+                std::snprintf(hex, sizeof hex, "0x%02X", byte);
+                fail(std::string("binary data (control byte ") + hex + "): not an OBJ text file");
+            }
+        }
+        std::istringstream in(line);
+        std::string tag, token;
+        in >> tag;
+        std::vector<std::string> tokens;
+        while (in >> token) tokens.push_back(token);
+        if (tag == "v") {
+            if (tokens.size() != 3 && tokens.size() != 4 && tokens.size() != 6) {
+                fail("'v' expects 3 numbers (x y z; optionally w, or r g b), got " +
+                     std::to_string(tokens.size()));
+            }
+            for (const std::string& t : tokens) check_number(tag, t);
+        } else if (tag == "vn") {
+            if (tokens.size() != 3) {
+                fail("'vn' expects 3 numbers (x y z), got " + std::to_string(tokens.size()));
+            }
+            for (const std::string& t : tokens) check_number(tag, t);
+        } else if (tag == "f" && tokens.size() < 3) {
+            fail("a face needs at least 3 vertices, got " + std::to_string(tokens.size()));
+        }
+    }
+}
+
 }  // namespace
 
 uint32_t default_material_index(std::vector<Material>& materials) {
@@ -160,6 +213,7 @@ uint32_t default_material_index(std::vector<Material>& materials) {
 TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
                       const std::string& where, MeshImportStats* stats) {
     require_readable(path, where);
+    check_obj_text(path);
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> file_materials;
