@@ -18,6 +18,7 @@ struct SphereGeometryData {
 
 struct ConeGeometryData {
     const Cone* cones;
+    const ConeFrame* frames;  // one per cone, prepared once
 };
 
 struct MeshGeometryData {
@@ -30,6 +31,7 @@ struct MeshGeometryData {
 struct AccelUserData {
     SphereGeometryData spheres{};
     ConeGeometryData cones{};
+    std::vector<ConeFrame> cone_frames;
     std::vector<MeshGeometryData> meshes;  // sized once: pointers into it stay valid
 };
 
@@ -123,12 +125,10 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     }
 }
 
-void cone_bounds(const RTCBoundsFunctionArguments* args) {
+void cone_bounds_callback(const RTCBoundsFunctionArguments* args) {
     const auto* data = static_cast<const ConeGeometryData*>(args->geometryUserPtr);
-    const Cone& c = data->cones[args->primID];
-    // Conservative: the box around both end spheres.
-    const Vec3 lower = glm::min(c.base - Vec3(c.base_radius), c.apex - Vec3(c.apex_radius));
-    const Vec3 upper = glm::max(c.base + Vec3(c.base_radius), c.apex + Vec3(c.apex_radius));
+    Vec3 lower, upper;
+    cone_bounds(data->cones[args->primID], lower, upper);
     RTCBounds* b = args->bounds_o;
     b->lower_x = lower.x;
     b->lower_y = lower.y;
@@ -140,7 +140,7 @@ void cone_bounds(const RTCBoundsFunctionArguments* args) {
 
 void cone_intersect(const RTCIntersectFunctionNArguments* args) {
     const auto* data = static_cast<const ConeGeometryData*>(args->geometryUserPtr);
-    const Cone& c = data->cones[args->primID];
+    const ConeFrame& c = data->frames[args->primID];
     RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
     RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
     for (unsigned i = 0; i < args->N; ++i) {
@@ -158,7 +158,7 @@ void cone_intersect(const RTCIntersectFunctionNArguments* args) {
 
 void cone_occluded(const RTCOccludedFunctionNArguments* args) {
     const auto* data = static_cast<const ConeGeometryData*>(args->geometryUserPtr);
-    const Cone& c = data->cones[args->primID];
+    const ConeFrame& c = data->frames[args->primID];
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] == 0) continue;
         Vec3 origin, direction, normal;
@@ -227,12 +227,14 @@ Accel::Accel(const Scene& scene, const AccelOptions& options)
 
     if (!scene.spheres.empty()) add_sphere_geometry();
     if (!scene.cones.empty()) {
+        for (const Cone& c : scene.cones) m_user_data->cone_frames.push_back(make_cone_frame(c));
         ConeGeometryData* data = &m_user_data->cones;
         data->cones = scene.cones.data();
+        data->frames = m_user_data->cone_frames.data();
         RTCGeometry g = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(g, static_cast<unsigned>(scene.cones.size()));
         rtcSetGeometryUserData(g, data);
-        rtcSetGeometryBoundsFunction(g, cone_bounds, nullptr);
+        rtcSetGeometryBoundsFunction(g, cone_bounds_callback, nullptr);
         rtcSetGeometryIntersectFunction(g, cone_intersect);
         rtcSetGeometryOccludedFunction(g, cone_occluded);
         attach(g, GeometryKind::Cones, 0);

@@ -4,14 +4,39 @@
 
 namespace rayo {
 
-bool intersect_cone(const Cone& cone, const Vec3& origin, const Vec3& direction, float tnear,
-                    float tfar, float& t_out, Vec3& normal) {
-    const DVec3 base(cone.base), axis_full = DVec3(cone.apex) - DVec3(cone.base);
-    const double height = glm::length(axis_full);
-    if (!(height > 0.0)) return false;
-    const DVec3 axis = axis_full / height;
+ConeFrame make_cone_frame(const Cone& cone) {
+    ConeFrame f;
+    f.base = DVec3(cone.base);
+    const DVec3 axis_full = DVec3(cone.apex) - f.base;
+    f.height = glm::length(axis_full);
+    if (!(f.height > 0.0)) {
+        f.height = 0.0;
+        return f;
+    }
+    f.axis = axis_full / f.height;
+    f.base_radius = cone.base_radius;
+    f.slope = (double(cone.apex_radius) - f.base_radius) / f.height;
+    return f;
+}
+
+void cone_bounds(const Cone& cone, Vec3& lower, Vec3& upper) {
+    const Vec3 axis_full = cone.apex - cone.base;
+    const float length = glm::length(axis_full);
+    const Vec3 axis = length > 0.0f ? axis_full / length : Vec3(0.0f);
+    // Half-extent of a unit circle around `axis`, per world axis (rounded up a little).
+    const Vec3 extent = glm::sqrt(glm::max(Vec3(1.0f) - axis * axis, Vec3(0.0f))) * 1.0001f;
+    lower = glm::min(cone.base - cone.base_radius * extent, cone.apex - cone.apex_radius * extent);
+    upper = glm::max(cone.base + cone.base_radius * extent, cone.apex + cone.apex_radius * extent);
+}
+
+bool intersect_cone(const ConeFrame& cone, const Vec3& origin, const Vec3& direction,
+                    float tnear, float tfar, float& t_out, Vec3& normal) {
+    if (cone.height == 0.0) return false;
+    const DVec3& base = cone.base;
+    const DVec3& axis = cone.axis;
+    const double height = cone.height;
     const double r0 = cone.base_radius;
-    const double slope = (double(cone.apex_radius) - r0) / height;  // dr/ds
+    const double slope = cone.slope;
 
     const DVec3 d(direction), w = DVec3(origin) - base;
     const double w_axis = glm::dot(w, axis), d_axis = glm::dot(d, axis);

@@ -15,9 +15,26 @@ struct Cone {
     uint32_t material = 0;
 };
 
+// What the intersection needs of a cone, computed once per cone rather than per ray.
+struct ConeFrame {
+    DVec3 base{0.0};
+    DVec3 axis{0.0, 1.0, 0.0};  // unit, base -> apex
+    double height = 0.0;        // 0: degenerate, never hit
+    double base_radius = 0.0;
+    double slope = 0.0;  // dr/ds along the axis
+};
+ConeFrame make_cone_frame(const Cone& cone);
+
+// Tight axis-aligned bounds: each end circle extends r·√(1 − a_i²) along world axis i.
+void cone_bounds(const Cone& cone, Vec3& lower, Vec3& upper);
+
 // Nearest hit in (tnear, tfar) of a ray (unit direction) with the open cone; the outward normal
 // at the hit goes to `normal`. Solves |w⊥ + t·d⊥|² = (r(s))², s the axial coordinate, in double.
-bool intersect_cone(const Cone& cone, const Vec3& origin, const Vec3& direction, float tnear,
-                    float tfar, float& t_out, Vec3& normal);
+bool intersect_cone(const ConeFrame& cone, const Vec3& origin, const Vec3& direction,
+                    float tnear, float tfar, float& t_out, Vec3& normal);
+inline bool intersect_cone(const Cone& cone, const Vec3& origin, const Vec3& direction,
+                           float tnear, float tfar, float& t_out, Vec3& normal) {
+    return intersect_cone(make_cone_frame(cone), origin, direction, tnear, tfar, t_out, normal);
+}
 
 }  // namespace rayo

@@ -196,5 +196,42 @@ TEST(Cone, DegenerateAxisNeverHits) {
         intersect_cone(c, Vec3(-5.0f, 0.0f, 0.0f), Vec3(1.0f, 0.0f, 0.0f), 0.0f, kInf, t, n));
 }
 
+// The bounds Embree builds the BVH from: every surface point inside, and no looser than needed
+// (the extreme points of the sampled surface reach each face of the box within 1%).
+TEST(Cone, BoundsAreTightAndContainTheSurface) {
+    Cone c;
+    c.base = Vec3(1.0f, -2.0f, 0.5f);
+    c.apex = Vec3(3.0f, 1.0f, -1.0f);
+    c.base_radius = 0.7f;
+    c.apex_radius = 0.2f;
+    Vec3 lower, upper;
+    cone_bounds(c, lower, upper);
+    const ConeFrame f = make_cone_frame(c);
+    const Vec3 axis(f.axis);
+    const Vec3 u = glm::normalize(glm::cross(axis, Vec3(0.0f, 0.0f, 1.0f)));
+    const Vec3 v = glm::cross(axis, u);
+    Vec3 seen_lower(1e30f), seen_upper(-1e30f);
+    for (int i = 0; i <= 100; ++i) {
+        const float s = static_cast<float>(i) / 100.0f;
+        const Vec3 centre = c.base + s * (c.apex - c.base);
+        const float r = c.base_radius + s * (c.apex_radius - c.base_radius);
+        for (int k = 0; k < 720; ++k) {
+            const float angle = static_cast<float>(k) * kPi / 360.0f;
+            const Vec3 p = centre + r * (std::cos(angle) * u + std::sin(angle) * v);
+            for (int a = 0; a < 3; ++a) {
+                EXPECT_GE(p[a], lower[a] - 1e-6f);
+                EXPECT_LE(p[a], upper[a] + 1e-6f);
+            }
+            seen_lower = glm::min(seen_lower, p);
+            seen_upper = glm::max(seen_upper, p);
+        }
+    }
+    for (int a = 0; a < 3; ++a) {
+        const float size = upper[a] - lower[a];
+        EXPECT_LT(seen_lower[a] - lower[a], 0.01f * size) << a;
+        EXPECT_LT(upper[a] - seen_upper[a], 0.01f * size) << a;
+    }
+}
+
 }  // namespace
 }  // namespace rayo
