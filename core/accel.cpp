@@ -219,6 +219,13 @@ Accel::Accel(const Scene& scene, const AccelOptions& options)
     }
     m_device = rtcNewDevice(nullptr);
     if (!m_device) throw std::runtime_error("Embree: cannot create a device");
+    rtcSetDeviceMemoryMonitorFunction(
+        m_device,
+        [](void* user, ssize_t bytes, bool /*post*/) {
+            static_cast<std::atomic<long long>*>(user)->fetch_add(bytes);
+            return true;  // never refuse an allocation
+        },
+        &m_embree_bytes);
     m_rtc_scene = rtcNewScene(m_device);
     rtcSetSceneFlags(m_rtc_scene, options.robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
     rtcSetSceneBuildQuality(m_rtc_scene, RTC_BUILD_QUALITY_HIGH);

@@ -4,6 +4,7 @@
 // Follows the Embree 3 call order: device -> scene -> geometries -> commit, then trace.
 #include <cstdint>
 #include <array>
+#include <atomic>
 #include <memory>
 #include <vector>
 
@@ -55,6 +56,8 @@ public:
     static constexpr int kCoherentBatch = 64;  // rays per stream call (an 8×8 tile)
 
     const AccelOptions& options() const { return m_options; }
+    // Bytes Embree holds for this scene (BVH and geometry buffers), from its memory monitor.
+    size_t embree_bytes() const { return static_cast<size_t>(m_embree_bytes.load()); }
     RTCScene rtc_scene() const { return m_rtc_scene; }  // for raw-Embree baselines
     size_t primitive_count() const { return m_primitive_count; }
 
@@ -80,6 +83,7 @@ private:
     std::unique_ptr<AccelUserData> m_user_data;
     std::vector<GeometryRef> m_geometries;  // indexed by Embree geomID
     size_t m_primitive_count = 0;
+    std::atomic<long long> m_embree_bytes{0};
     uint32_t m_triangles_per_sphere = 0;  // SphereMesh
     std::vector<Vec3> m_icosphere_normals;
     std::vector<std::array<uint32_t, 3>> m_icosphere_triangles;
