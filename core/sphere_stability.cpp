@@ -85,6 +85,7 @@ struct Reference {
     LD far_root = 0;   // the larger root (valid when both roots exist)
     bool has_roots = false;
     bool tangent_band = false;  // |p − r| ≤ kTangentBand·r
+    LD rim_distance = 0;        // |p − r| / r
 };
 
 Reference solve_reference(const LVec& origin, const LVec& direction, const LVec& center,
@@ -94,7 +95,8 @@ Reference solve_reference(const LVec& origin, const LVec& direction, const LVec&
     const LD a = dot(direction, direction), b = dot(f, direction);
     const LVec fxd = cross(f, direction);
     const LD perpendicular = std::sqrt(dot(fxd, fxd) / a);
-    ref.tangent_band = std::fabs(perpendicular - radius) <= LD(kTangentBand) * radius;
+    ref.rim_distance = std::fabs(perpendicular - radius) / radius;
+    ref.tangent_band = ref.rim_distance <= LD(kTangentBand);
     const LD discriminant = a * radius * radius - dot(fxd, fxd);
     if (!(discriminant > 0)) return ref;
     const LD length_f = std::sqrt(dot(f, f));
@@ -311,8 +313,10 @@ std::vector<StabilityRow> run_stability_case(const StabilityCase& c,
                 continue;
             }
             if (ref.hit) ++row.reference_hits;
-            if (hit && !ref.hit) ++row.wrong_hits;
-            if (!hit && ref.hit) ++row.wrong_misses;
+            if (hit != ref.hit) {
+                ++(hit ? row.wrong_hits : row.wrong_misses);
+                row.wrong_rim_max = std::max(row.wrong_rim_max, double(ref.rim_distance));
+            }
         }
         const int counted = row.rays - row.excluded;
         row.wrong_rate =
@@ -594,7 +598,7 @@ void write_csv(std::ostream& out, const std::vector<StabilityRow>& rows) {
     out << std::setprecision(9);
     out << "pattern,reference,distance_ratio,radius,center_magnitude,aim,seed,method,math,"
            "precision,rays,excluded,reference_hits,wrong_hits,wrong_misses,wrong_rate,both_hit,"
-           "t_rel_median,t_rel_max,direct_mismatches\n";
+           "t_rel_median,t_rel_max,direct_mismatches,wrong_rim_max\n";
     for (const StabilityRow& r : rows) {
         const StabilityCase& c = r.config;
         out << ray_pattern_name(c.pattern) << ',' << reference_problem_name(c.reference) << ','
@@ -602,7 +606,7 @@ void write_csv(std::ostream& out, const std::vector<StabilityRow>& rows) {
             << ',' << c.seed << ',' << r.method << ',' << r.math << ',' << r.precision << ','
             << r.rays << ',' << r.excluded << ',' << r.reference_hits << ',' << r.wrong_hits << ','
             << r.wrong_misses << ',' << r.wrong_rate << ',' << r.both_hit << ',' << r.t_rel_median
-            << ',' << r.t_rel_max << ',' << r.direct_mismatches << '\n';
+            << ',' << r.t_rel_max << ',' << r.direct_mismatches << ',' << r.wrong_rim_max << '\n';
     }
     out.precision(precision);
 }

@@ -78,6 +78,9 @@ struct StabilityRow {
     // User rows: rays whose hit/miss or t (bit for bit) differ from the direct analytic call with
     // the same math (should be 0: Embree runs our code). −1 for the other methods.
     int direct_mismatches = -1;
+    // Farthest wrong ray from the silhouette: max |p − r|/r over the wrong hits and misses (p the
+    // reference perpendicular distance); 0 when none. The width of the band a method gets wrong.
+    double wrong_rim_max = 0.0;
 };
 
 // Every method on one configuration: one row per method, in the order given.
