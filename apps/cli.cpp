@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/accuracy_bench.h"
 #include "apps/default_scene.h"
 #include "apps/renderer.h"
 #include "apps/scene_loader.h"
@@ -36,6 +37,7 @@ const char* const kUsage = R"(rayo — a Whitted ray tracer (Embree + TBB + Open
 usage:
   rayo render [SCENE] [options]   render SCENE (.json or .nff); the built-in scene without one
   rayo info SCENE                 load SCENE and print what it contains
+  rayo bench accuracy -o DIR      the sphere-method study: CSV and charts (gnuplot) in DIR
   rayo texture NAME [options]     write a procedural texture flat (the plane z = 0)
   rayo --help | --version
 
@@ -392,6 +394,14 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
     return 0;
 }
 
+int run_bench(const std::vector<std::string>& args, std::ostream& out) {
+    if (args.size() != 3 || args[0] != "accuracy" || (args[1] != "-o" && args[1] != "--output")) {
+        throw UsageError("bench: expected 'rayo bench accuracy -o DIR'");
+    }
+    run_accuracy_bench(args[2], out);
+    return 0;
+}
+
 }  // namespace
 
 int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
@@ -419,6 +429,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
         }
         if (command == "render") return run_render(args, out, err);
         if (command == "info") return run_info(args, out);
+        if (command == "bench") return run_bench(args, out);
         if (command == "texture") return run_texture(args, out);
         throw UsageError("unknown command '" + command + "' (see rayo --help)");
     } catch (const UsageError& e) {

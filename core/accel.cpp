@@ -387,8 +387,13 @@ bool Accel::nearest_sphere_brute_force(const Ray& ray, float tfar, uint32_t& ind
 
 void Accel::fill_sphere_hit(const Ray& ray, float t, uint32_t sphere, SurfaceHit& hit) const {
     const Sphere& s = m_scene.spheres[sphere];
-    // Re-project the hit point onto the sphere (DESIGN.md "Numerics").
-    const Vec3 outward = glm::normalize(ray.at(t) - s.center);
+    // Re-project the hit point onto the sphere (DESIGN.md "Numerics"). A sphere below one ulp
+    // of its position can put the hit on its centre in float: face the ray instead of dividing
+    // by zero (a NaN origin would reach Embree; docs/stability.md, breaking points).
+    const Vec3 offset = ray.at(t) - s.center;
+    const float length_squared = glm::dot(offset, offset);
+    const Vec3 outward =
+        length_squared > 0.0f ? offset * glm::inversesqrt(length_squared) : -ray.direction;
     hit.t = t;
     hit.kind = PrimitiveKind::Sphere;
     hit.position = s.center + s.radius * outward;
@@ -396,6 +401,7 @@ void Accel::fill_sphere_hit(const Ray& ray, float t, uint32_t sphere, SurfaceHit
     hit.shading_normal = outward;
     hit.object_size = s.radius;
     hit.material = s.material;
+    hit.primitive = sphere;
 }
 
 bool Accel::intersect(const Ray& ray, SurfaceHit& hit) const {
@@ -488,6 +494,7 @@ bool Accel::finish_hit(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& hit)
             }
             hit.object_size = m_scene.spheres[sphere].radius;
             hit.material = m_scene.spheres[sphere].material;
+            hit.primitive = sphere;
             break;
         }
         case GeometryKind::Cones: {
@@ -500,6 +507,7 @@ bool Accel::finish_hit(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& hit)
             hit.object_size = glm::max(glm::length(c.apex - c.base),
                                        glm::max(c.base_radius, c.apex_radius));
             hit.material = c.material;
+            hit.primitive = prim;
             break;
         }
         case GeometryKind::Mesh: {
@@ -529,6 +537,8 @@ bool Accel::finish_hit(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& hit)
             hit.object_size = glm::max(glm::length(mesh.positions[tri[1]] - p0),
                                        glm::length(mesh.positions[tri[2]] - p0));
             hit.material = mesh.materials[prim];
+            hit.primitive = prim;
+            hit.mesh = ref.index;
             break;
         }
     }

@@ -229,13 +229,30 @@ TEST(SphereMethodChoice, AutoPicksAnalyticStableNearTheOrigin) {
     EXPECT_NE(c.reason.find("mesh would need level"), std::string::npos) << c.reason;
 }
 
-TEST(SphereMethodChoice, AutoPicksDoubleForTinySpheresFarFromTheOrigin) {
-    // A 1 mm sphere seen from 1 cm, 1e5 units from the origin: float ulps there are ~0.008.
+TEST(SphereMethodChoice, TinySpheresFarFromTheOriginAreReportedNotDoubled) {
+    // A 1 mm sphere seen from 1 cm, 1e5 units from the origin: float ulps there are ~0.008, so
+    // the silhouette is off by pixels for every method; double cannot help (docs/stability.md).
     const SceneDescription d = one_sphere_scene(Vec3(1e5f, 0, 0), 1e-3f, 1e-2f);
     const SphereChoice c = choose_sphere_method(d, Camera::create(d.scene.camera));
     EXPECT_EQ(c.spheres.method, SphereMethod::User);
-    EXPECT_EQ(c.math, SphereMath::Double);
-    EXPECT_NE(c.reason.find("user/double"), std::string::npos) << c.reason;
+    EXPECT_EQ(c.math, SphereMath::Stable);
+    EXPECT_NE(c.reason.find("beyond float's resolution"), std::string::npos) << c.reason;
+}
+
+TEST(SphereMethods, SphereBelowOneUlpOfItsPositionGivesFiniteHits) {
+    Scene scene;
+    scene.spheres.push_back({Vec3(1e5f, 0.0f, 0.0f), 1e-3f, 0});
+    const Accel accel(scene, options_for("user"));
+    Ray ray;
+    ray.origin = Vec3(1e5f, 0.0f, 10.0f);
+    ray.direction = Vec3(0.0f, 0.0f, -1.0f);
+    SurfaceHit hit;
+    if (accel.intersect(ray, hit)) {
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_TRUE(std::isfinite(hit.position[a]));
+            EXPECT_TRUE(std::isfinite(hit.geometric_normal[a]));
+        }
+    }
 }
 
 TEST(SphereMethodChoice, ExplicitChoicesAreKept) {

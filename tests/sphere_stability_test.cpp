@@ -248,9 +248,12 @@ TEST(StabilityOffset, PositionScaledOffsetOutgrowsSpheresBelowAboutFortyUlps) {
     const OffsetRow row = offset_row(1.0, 1e6, OffsetMethod::PositionScaled, SpawnKind::Refraction);
     EXPECT_GT(row.max_offset_radii, 2.0);
     EXPECT_GT(row.leaks, 900);
-    // A sphere smaller than the ulp of its position has no normal at all.
-    EXPECT_GT(offset_row(1e-3, 1e6, OffsetMethod::PositionScaled, SpawnKind::Reflection).degenerate,
-              900);
+    // A sphere smaller than the ulp of its position: hits round onto its centre. Accel then
+    // faces the normal to the ray (finite, never NaN), but nothing spawned from it is right.
+    const OffsetRow tiny =
+        offset_row(1e-3, 1e6, OffsetMethod::PositionScaled, SpawnKind::Refraction);
+    EXPECT_EQ(tiny.degenerate, 0);
+    EXPECT_GT(tiny.failure_rate, 0.9);
 }
 
 TEST(StabilityStudy, DefaultStudyRowsAreCompleteAndWrittenAsCsv) {
