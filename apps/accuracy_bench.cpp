@@ -14,6 +14,8 @@
 #include "apps/sphereflake.h"
 #include "core/accel.h"
 #include "core/error.h"
+#include "core/sphere_stability.h"
+#include "shading/whitted.h"
 
 namespace rayo {
 namespace {
@@ -146,12 +148,12 @@ std::vector<AccuracyRow> run_accuracy_study(std::ostream& progress) {
         bool smooth;
     };
     const Config configs[] = {
-        {"bruteforce", SphereMath::Seed, true},   {"bruteforce", SphereMath::Stable, true},
-        {"user", SphereMath::Seed, true},         {"user", SphereMath::Stable, true},
-        {"user", SphereMath::Double, true},       {"embree-point", SphereMath::Stable, true},
-        {"mesh:0", SphereMath::Stable, true},     {"mesh:1", SphereMath::Stable, true},
-        {"mesh:2", SphereMath::Stable, true},     {"mesh:3", SphereMath::Stable, true},
-        {"mesh:4", SphereMath::Stable, true},     {"mesh:5", SphereMath::Stable, true},
+        {"bruteforce", SphereMath::Seed, true}, {"bruteforce", SphereMath::Stable, true},
+        {"user", SphereMath::Seed, true},       {"user", SphereMath::Stable, true},
+        {"user", SphereMath::Double, true},     {"embree-point", SphereMath::Stable, true},
+        {"mesh:0", SphereMath::Stable, true},   {"mesh:1", SphereMath::Stable, true},
+        {"mesh:2", SphereMath::Stable, true},   {"mesh:3", SphereMath::Stable, true},
+        {"mesh:4", SphereMath::Stable, true},   {"mesh:5", SphereMath::Stable, true},
         {"mesh:3", SphereMath::Stable, false},
     };
     std::vector<AccuracyRow> rows;
@@ -162,8 +164,7 @@ std::vector<AccuracyRow> run_accuracy_study(std::ostream& progress) {
         reference.settings.sphere_math = SphereMath::Double;
         const RenderResult ref = render_scene(reference, 0, false);
         const std::vector<uint64_t> ref_ids = primary_ids(reference, ref.spheres);
-        const SphereChoice chosen =
-            choose_sphere_method(base, Camera::create(base.scene.camera));
+        const SphereChoice chosen = choose_sphere_method(base, Camera::create(base.scene.camera));
         progress << name << ": reference bruteforce/double in " << std::fixed
                  << std::setprecision(2) << ref.bvh_seconds + ref.render_seconds << " s; auto -> "
                  << sphere_method_name(chosen.spheres) << "/" << sphere_math_name(chosen.math)
@@ -193,10 +194,10 @@ std::vector<AccuracyRow> run_accuracy_study(std::ostream& progress) {
             size_t wrong = 0;
             for (size_t i = 0; i < ids.size(); ++i) wrong += ids[i] != ref_ids[i];
             row.error.silhouette_wrong = 100.0 * double(wrong) / double(ids.size());
-            progress << "  " << std::setw(14) << std::left << row.method << std::setw(7)
-                     << row.math << std::right << std::setprecision(4) << row.seconds
-                     << " s  rmse " << std::scientific << std::setprecision(2) << row.error.rmse
-                     << std::fixed << "  silhouette " << row.error.silhouette_wrong << "%"
+            progress << "  " << std::setw(14) << std::left << row.method << std::setw(7) << row.math
+                     << std::right << std::setprecision(4) << row.seconds << " s  rmse "
+                     << std::scientific << std::setprecision(2) << row.error.rmse << std::fixed
+                     << "  silhouette " << row.error.silhouette_wrong << "%"
                      << (row.is_auto ? "  <- auto" : "") << "\n";
             rows.push_back(row);
         }
@@ -210,8 +211,8 @@ void write_accuracy_csv(std::ostream& out, const std::vector<AccuracyRow>& rows)
     out << std::setprecision(9);
     for (const AccuracyRow& r : rows) {
         out << csv_field(r.scene) << "," << csv_field(r.method) << "," << csv_field(r.math) << ","
-            << (r.is_auto ? 1 : 0) << "," << r.seconds << "," << r.primitives << ","
-            << r.error.rmse << "," << r.error.max_abs << "," << r.error.pixels_differing << ","
+            << (r.is_auto ? 1 : 0) << "," << r.seconds << "," << r.primitives << "," << r.error.rmse
+            << "," << r.error.max_abs << "," << r.error.pixels_differing << ","
             << r.error.silhouette_wrong << "\n";
     }
 }
@@ -226,6 +227,36 @@ void run_accuracy_bench(const std::string& dir, std::ostream& progress) {
         std::ofstream out(csv);
         write_accuracy_csv(out, rows);
         if (!out) throw InputError(csv, "cannot write");
+    }
+    // The stability sweep (docs/stability.md): wrong hit/miss rate against distance/radius per
+    // method, as CSV and as one gnuplot data block per method for the chart.
+    progress << "stability sweep (distance/radius 1 .. 1e7)\n";
+    const std::vector<StabilityRow> sweep = run_distance_sweep(StabilityConfig{});
+    const std::string stability_csv = dir + "/stability.csv";
+    const std::string stability_dat = dir + "/stability_chart.dat";
+    int series = 0;
+    {
+        std::ofstream out(stability_csv);
+        write_csv(out, sweep);
+        std::ofstream dat(stability_dat);
+        std::vector<std::string> labels;
+        for (const StabilityRow& r : sweep) {
+            const std::string label = r.method + "/" + r.math;
+            if (std::find(labels.begin(), labels.end(), label) == labels.end()) {
+                labels.push_back(label);
+            }
+        }
+        for (const std::string& label : labels) {
+            dat << "\"" << label << "\" \"wrong %\"\n";
+            for (const StabilityRow& r : sweep) {
+                if (r.method + "/" + r.math != label) continue;
+                dat << r.config.distance_ratio << " " << std::max(100.0 * r.wrong_rate, 1e-2)
+                    << "\n";
+            }
+            dat << "\n\n";
+        }
+        series = static_cast<int>(labels.size());
+        if (!out || !dat) throw InputError(stability_csv, "cannot write");
     }
     const std::string script = dir + "/charts.gp";
     {
@@ -246,11 +277,25 @@ void run_accuracy_bench(const std::string& dir, std::ostream& progress) {
                    << "\": time against error (circled: auto; 0 drawn at 1e-7)'\n"
                    << "plot '" << csv << "' skip 1 using (strcol(1) eq '" << name
                    << "' ? $5 : NaN):(($7 > 1e-7) ? $7 : 1e-7):(strcol(2).(strcol(3) eq '-' ? '' : "
-                      "'/'.strcol(3))) with labels point pt 7 ps 1 offset char 1,0.6 font ',8', \\\n"
+                      "'/'.strcol(3))) with labels point pt 7 ps 1 offset char 1,0.6 font ',8', "
+                      "\\\n"
                    << "     '' skip 1 using (strcol(1) eq '" << name
                    << "' && $4 == 1 ? $5 : NaN):(($7 > 1e-7) ? $7 : 1e-7) with points pt 6 ps 3 "
                       "lw 2\n";
             }
+        }
+        for (const char* format : {"png", "svg"}) {
+            gp << "set terminal " << (std::string(format) == "png" ? "pngcairo" : "svg")
+               << " size 900,600\n"
+               << "set output '" << dir << "/stability." << format << "'\n"
+               << "set datafile separator whitespace\n"
+               << "set key outside right\n"
+               << "set title 'Wrong hit/miss rate against distance/radius (disk rays; 0 drawn at "
+                  "0.01%)'\n"
+               << "set xlabel 'distance / radius'\nset ylabel 'wrong hit/miss (%)'\n"
+               << "plot for [i=0:" << series - 1 << "] '" << stability_dat
+               << "' index i using 1:2 with linespoints title columnheader(1)\n"
+               << "set datafile separator ','\nset key off\n";
         }
     }
     const std::string command = "gnuplot '" + script + "' 2>&1";

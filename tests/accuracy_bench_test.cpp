@@ -87,6 +87,9 @@ TEST(AccuracyBenchCommand, WritesCsvAndChartsForEveryScene) {
             EXPECT_GT(std::filesystem::file_size(chart), 1000u) << chart;
         }
     }
+    for (const char* file : {"stability.png", "stability.svg", "stability.csv"}) {
+        EXPECT_GT(std::filesystem::file_size(dir / file), 1000u) << file;
+    }
     std::filesystem::remove_all(dir);
 }
 
