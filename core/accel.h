@@ -33,6 +33,8 @@ struct SurfaceHit {
     float object_size = 0.0f;    // radius or triangle extent: scales the spawned-ray offset
     uint32_t material = 0;
     PrimitiveKind kind = PrimitiveKind::Sphere;
+    uint32_t primitive = 0;  // index of the sphere, the cone, or the triangle within its mesh
+    uint32_t mesh = 0;       // the mesh's index, for triangles
 };
 
 struct AccelUserData;
