@@ -13,7 +13,6 @@ namespace {
 
 struct SphereGeometryData {
     const Sphere* spheres;
-    SphereMath math;
 };
 
 struct ConeGeometryData {
@@ -86,6 +85,9 @@ void report_hit(RTCRayN* ray, RTCHitN* hit, unsigned n, unsigned i, float t, con
     RTCHitN_instID(hit, n, i, 0) = context->instID[0];
 }
 
+// Templated on the math so that each geometry's callback runs one form, inlined, without a
+// per-ray switch.
+template <SphereMath kMath>
 void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
     const auto* data = static_cast<const SphereGeometryData*>(args->geometryUserPtr);
     const Sphere& s = data->spheres[args->primID];
@@ -97,7 +99,7 @@ void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
         read_ray(ray, args->N, i, origin, direction);
         float t;
         bool far_root;
-        if (intersect_sphere(data->math, origin, direction, s.center, s.radius,
+        if (intersect_sphere(kMath, origin, direction, s.center, s.radius,
                              RTCRayN_tnear(ray, args->N, i), RTCRayN_tfar(ray, args->N, i), t,
                              far_root)) {
             // Outward normal; the integrator tells inside from outside by its sign against
@@ -108,6 +110,7 @@ void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
     }
 }
 
+template <SphereMath kMath>
 void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     const auto* data = static_cast<const SphereGeometryData*>(args->geometryUserPtr);
     const Sphere& s = data->spheres[args->primID];
@@ -117,7 +120,7 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
         read_ray(args->ray, args->N, i, origin, direction);
         float t;
         bool far_root;
-        if (intersect_sphere(data->math, origin, direction, s.center, s.radius,
+        if (intersect_sphere(kMath, origin, direction, s.center, s.radius,
                              RTCRayN_tnear(args->ray, args->N, i),
                              RTCRayN_tfar(args->ray, args->N, i), t, far_root)) {
             RTCRayN_tfar(args->ray, args->N, i) = -std::numeric_limits<float>::infinity();
@@ -299,13 +302,25 @@ void Accel::add_sphere_geometry() {
             return;
         case SphereMethod::User: {
             SphereGeometryData* data = &m_user_data->spheres;
-            *data = SphereGeometryData{spheres.data(), m_options.sphere_math};
+            data->spheres = spheres.data();
             RTCGeometry g = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_USER);
             rtcSetGeometryUserPrimitiveCount(g, static_cast<unsigned>(spheres.size()));
             rtcSetGeometryUserData(g, data);  // Embree 3 ignores the bounds function's pointer
             rtcSetGeometryBoundsFunction(g, sphere_bounds, nullptr);
-            rtcSetGeometryIntersectFunction(g, sphere_intersect);
-            rtcSetGeometryOccludedFunction(g, sphere_occluded);
+            switch (m_options.sphere_math) {
+                case SphereMath::Seed:
+                    rtcSetGeometryIntersectFunction(g, sphere_intersect<SphereMath::Seed>);
+                    rtcSetGeometryOccludedFunction(g, sphere_occluded<SphereMath::Seed>);
+                    break;
+                case SphereMath::Stable:
+                    rtcSetGeometryIntersectFunction(g, sphere_intersect<SphereMath::Stable>);
+                    rtcSetGeometryOccludedFunction(g, sphere_occluded<SphereMath::Stable>);
+                    break;
+                case SphereMath::Double:
+                    rtcSetGeometryIntersectFunction(g, sphere_intersect<SphereMath::Double>);
+                    rtcSetGeometryOccludedFunction(g, sphere_occluded<SphereMath::Double>);
+                    break;
+            }
             attach(g, GeometryKind::UserSpheres, 0);
             break;
         }

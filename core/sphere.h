@@ -85,7 +85,7 @@ bool intersect_sphere_stable(const glm::vec<3, T>& origin, const glm::vec<3, T>&
 }
 
 template <typename T>
-bool intersect_sphere(SphereMath math, const glm::vec<3, T>& origin,
+inline bool intersect_sphere(SphereMath math, const glm::vec<3, T>& origin,
                       const glm::vec<3, T>& direction, const glm::vec<3, T>& center, T radius,
                       T tnear, T tfar, T& t_out, bool& far_root) {
     switch (math) {
