@@ -20,7 +20,8 @@ inline Vec3 lambert_term(const Material& m, const Vec3& normal, const Vec3& to_l
 inline Vec3 specular_term(const Material& m, const Vec3& normal, const Vec3& to_light,
                           const Vec3& to_eye) {
     const float n_dot_l = glm::dot(normal, to_light);
-    if (n_dot_l <= 0.0f) return Vec3(0.0f);
+    // No highlight to compute for Ks = 0 (NFF's matte surfaces carry exponents like 100000).
+    if (n_dot_l <= 0.0f || m.ks == Vec3(0.0f)) return Vec3(0.0f);
     float cosine;
     if (m.specular_model == SpecularModel::Phong) {
         const Vec3 reflected = 2.0f * n_dot_l * normal - to_light;

@@ -75,7 +75,6 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(const Ray& ray,
     // Procedural textures (seed 003 ch. 3): untextured materials skip this and are used as is.
     if (base.textures.any()) {
         p.textured = material_at(base, m_scene.textures, hit.position);
-        p.is_textured = true;
         if (const Texture* bump = texture_at(m_scene.textures, base.textures.bump)) {
             p.normal = bump_normal(*bump, base.textures.bump_strength, hit.position, p.normal,
                                    p.facing_geometric);
