@@ -6,11 +6,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <vector>
 #include <string>
 
 #include "apps/accuracy_bench.h"
 #include "apps/renderer.h"
 #include "apps/sphere_method_choice.h"
+#include "core/icosphere.h"
 
 namespace rayo {
 namespace {
@@ -76,6 +79,24 @@ TEST(AccuracyBenchCommand, WritesCsvAndChartsForEveryScene) {
     while (std::getline(csv, line)) {
         ++rows;
         auto_rows += line.find(",1,") != std::string::npos;
+        // The documented tolerances against bruteforce/double (docs/sphere-methods.md).
+        std::vector<std::string> f;
+        std::stringstream fields(line);
+        for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+        ASSERT_EQ(f.size(), 10u) << line;
+        const std::string method = f[1], math = f[2];
+        const double rmse = std::stod(f[6]), differing = std::stod(f[8]),
+                     silhouette = std::stod(f[9]);
+        if (math == "double") {
+            EXPECT_EQ(rmse, 0.0) << line;
+        } else if (math == "stable" || method == "embree-point") {
+            EXPECT_LE(rmse, 2e-3) << line;
+            EXPECT_LE(differing, 0.5) << line;
+            EXPECT_LE(silhouette, 0.01) << line;
+        } else if (method.rfind("mesh:", 0) == 0) {
+            const int level = method[5] - '0';
+            EXPECT_LE(silhouette, 60.0 * kIcosphereMaxDepth[level]) << line;
+        }
     }
     const int scenes = static_cast<int>(accuracy_scenes().size());
     EXPECT_EQ(rows, 13 * scenes);
