@@ -31,16 +31,20 @@ struct AccuracyRow {
     ImageError error;
 };
 
-// The study's scenes (name, description), small enough that brute force stays affordable.
-std::vector<std::pair<std::string, SceneDescription>> accuracy_scenes();
+// The study's scenes (name, description) at `size`×`size` pixels, small enough that brute force
+// stays affordable.
+constexpr int kAccuracyImageSize = 384;
+std::vector<std::pair<std::string, SceneDescription>> accuracy_scenes(
+    int size = kAccuracyImageSize);
 
 // Runs the whole study; `progress` gets one line per render. Threads: all cores.
-std::vector<AccuracyRow> run_accuracy_study(std::ostream& progress);
+std::vector<AccuracyRow> run_accuracy_study(std::ostream& progress, int size = kAccuracyImageSize);
 
 void write_accuracy_csv(std::ostream& out, const std::vector<AccuracyRow>& rows);
 
 // Writes DIR/accuracy.csv, DIR/stability.csv, DIR/charts.gp and runs gnuplot on it. Throws
 // InputError when DIR cannot be written or gnuplot fails.
-void run_accuracy_bench(const std::string& dir, std::ostream& progress);
+void run_accuracy_bench(const std::string& dir, std::ostream& progress,
+                        int size = kAccuracyImageSize);
 
 }  // namespace rayo

@@ -37,7 +37,9 @@ const char* const kUsage = R"(rayo — a Whitted ray tracer (Embree + TBB + Open
 usage:
   rayo render [SCENE] [options]   render SCENE (.json or .nff); the built-in scene without one
   rayo info SCENE                 load SCENE and print what it contains
-  rayo bench accuracy -o DIR      the sphere-method study: CSV and charts (gnuplot) in DIR
+  rayo bench accuracy -o DIR [--size N]
+                                  the sphere-method study: CSV and charts (gnuplot) in DIR,
+                                  scenes of N×N pixels [384]
   rayo texture NAME [options]     write a procedural texture flat (the plane z = 0)
   rayo --help | --version
 
@@ -395,10 +397,24 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
 }
 
 int run_bench(const std::vector<std::string>& args, std::ostream& out) {
-    if (args.size() != 3 || args[0] != "accuracy" || (args[1] != "-o" && args[1] != "--output")) {
-        throw UsageError("bench: expected 'rayo bench accuracy -o DIR'");
+    if (args.empty() || args[0] != "accuracy") {
+        throw UsageError("bench: expected 'rayo bench accuracy -o DIR [--size N]'");
     }
-    run_accuracy_bench(args[2], out);
+    std::optional<std::string> dir;
+    int size = kAccuracyImageSize;
+    for (size_t i = 1; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (i + 1 >= args.size()) throw UsageError(a + ": missing value");
+        if (a == "-o" || a == "--output") {
+            dir = args[++i];
+        } else if (a == "--size") {
+            size = parse_int(a, args[++i], 16, 4096);
+        } else {
+            throw UsageError("bench accuracy: unknown option '" + a + "'");
+        }
+    }
+    if (!dir) throw UsageError("bench accuracy: -o DIR is required");
+    run_accuracy_bench(*dir, out, size);
     return 0;
 }
 

@@ -41,7 +41,7 @@ TEST(AccuracyMetrics, CompareFilmsMeasuresKnownDifferences) {
 // the stable form matches the double reference to float rounding: the study's central finding.
 TEST(AccuracyStudy, FarSceneSeparatesSeedFromStable) {
     SceneDescription far;
-    for (auto& [name, scene] : accuracy_scenes()) {
+    for (auto& [name, scene] : accuracy_scenes(128)) {
         if (name == "far") far = scene;
     }
     ASSERT_FALSE(far.scene.spheres.empty());
@@ -69,7 +69,7 @@ TEST(AccuracyBenchCommand, WritesCsvAndChartsForEveryScene) {
         std::filesystem::temp_directory_path() / ("rayo_accuracy_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     const std::string command =
-        "'" RAYO_CLI_PATH "' bench accuracy -o '" + dir.string() + "' > /dev/null 2>&1";
+        "'" RAYO_CLI_PATH "' bench accuracy --size 128 -o '" + dir.string() + "' > /dev/null 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0);
     std::ifstream csv(dir / "accuracy.csv");
     std::string line;
