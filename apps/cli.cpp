@@ -89,6 +89,38 @@ int parse_int(const std::string& flag, const std::string& text, int min_value, i
     return value;
 }
 
+// A number in [min_value, max_value] (finite), or a UsageError naming the flag.
+double parse_number(const std::string& flag, const std::string& text, double min_value,
+                    double max_value) {
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) ||
+        value < min_value || value > max_value) {
+        std::ostringstream expected;
+        expected << flag << ": expected a number in [" << min_value << ", " << max_value
+                 << "], got '" << text << "'";
+        throw UsageError(expected.str());
+    }
+    return value;
+}
+
+// Walks a command's arguments: `next()` moves to the next one, `value()` takes the argument
+// that follows the current flag (a UsageError when there is none).
+class ArgCursor {
+public:
+    explicit ArgCursor(const std::vector<std::string>& args) : m_args(args) {}
+    bool next() { return ++m_index < m_args.size(); }
+    const std::string& current() const { return m_args[m_index]; }
+    const std::string& value() {
+        if (m_index + 1 >= m_args.size()) throw UsageError(current() + ": missing value");
+        return m_args[++m_index];
+    }
+
+private:
+    const std::vector<std::string>& m_args;
+    size_t m_index = static_cast<size_t>(-1);
+};
+
 struct RenderArgs {
     std::optional<std::string> scene_path;
     std::optional<std::string> output;
@@ -105,12 +137,10 @@ struct RenderArgs {
 
 RenderArgs parse_render_args(const std::vector<std::string>& args) {
     RenderArgs r;
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        auto value = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) throw UsageError(a + ": missing value");
-            return args[++i];
-        };
+    ArgCursor cursor(args);
+    while (cursor.next()) {
+        const std::string& a = cursor.current();
+        auto value = [&]() -> const std::string& { return cursor.value(); };
         if (a == "-o" || a == "--output") {
             r.output = value();
         } else if (a == "--width") {
@@ -140,13 +170,7 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
                                  "'");
             }
         } else if (a == "--max-error-px") {
-            const std::string& m = value();
-            char* end = nullptr;
-            const float e = std::strtof(m.c_str(), &end);
-            if (m.empty() || *end != '\0' || !(e > 0.0f) || !std::isfinite(e)) {
-                throw UsageError(a + ": expected a number > 0, got '" + m + "'");
-            }
-            r.max_error_px = e;
+            r.max_error_px = static_cast<float>(parse_number(a, value(), 1e-6, 1e6));
         } else if (a == "--flat-spheres") {
             r.flat_spheres = true;
         } else if (a == "--single-rays") {
@@ -321,12 +345,10 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
     int width = 512, height = 512;
     std::optional<float> scale;
     uint32_t seed = 0;
-    for (size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        auto value = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) throw UsageError(a + ": missing value");
-            return args[++i];
-        };
+    ArgCursor cursor(args);
+    while (cursor.next()) {
+        const std::string& a = cursor.current();
+        auto value = [&]() -> const std::string& { return cursor.value(); };
         if (a == "-o" || a == "--output") {
             output = value();
         } else if (a == "--size") {
@@ -338,13 +360,7 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
             width = parse_int(a + " width", v.substr(0, x), 1, kMaxImageSide);
             height = parse_int(a + " height", v.substr(x + 1), 1, kMaxImageSide);
         } else if (a == "--scale") {
-            const std::string& v = value();
-            char* end = nullptr;
-            const double s = std::strtod(v.c_str(), &end);
-            if (v.empty() || end != v.c_str() + v.size() || !(s >= 1e-6 && s <= 1e6)) {
-                throw UsageError(a + ": expected a number in [1e-6, 1e6], got '" + v + "'");
-            }
-            scale = static_cast<float>(s);
+            scale = static_cast<float>(parse_number(a, value(), 1e-6, 1e6));
         } else if (a == "--seed") {
             seed = static_cast<uint32_t>(parse_int(a, value(), 0, 2147483647));
         } else if (!a.empty() && a[0] == '-') {
@@ -402,13 +418,14 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
     }
     std::optional<std::string> dir;
     int size = kAccuracyImageSize;
-    for (size_t i = 1; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (i + 1 >= args.size()) throw UsageError(a + ": missing value");
+    ArgCursor cursor(args);
+    cursor.next();  // "accuracy"
+    while (cursor.next()) {
+        const std::string& a = cursor.current();
         if (a == "-o" || a == "--output") {
-            dir = args[++i];
+            dir = cursor.value();
         } else if (a == "--size") {
-            size = parse_int(a, args[++i], 16, 4096);
+            size = parse_int(a, cursor.value(), 16, 4096);
         } else {
             throw UsageError("bench accuracy: unknown option '" + a + "'");
         }

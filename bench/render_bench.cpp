@@ -10,13 +10,11 @@
 #include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
 
-#include <pmmintrin.h>
-#include <xmmintrin.h>
-
 #include <vector>
 
 #include "apps/renderer.h"
 #include "apps/sphereflake.h"
+#include "bench/bench_main.h"
 #include "core/accel.h"
 #include "core/camera.h"
 
@@ -206,12 +204,4 @@ BENCHMARK(FullRender)->Unit(benchmark::kMillisecond)->UseRealTime();
 }  // namespace
 }  // namespace rayo
 
-int main(int argc, char** argv) {
-    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
-    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
-}
+RAYO_BENCHMARK_MAIN()

@@ -12,9 +12,6 @@
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
-#include <pmmintrin.h>
-#include <xmmintrin.h>
-
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -22,6 +19,7 @@
 #include <random>
 #include <vector>
 
+#include "bench/bench_main.h"
 #include "core/accel.h"
 #include "core/camera.h"
 
@@ -155,12 +153,4 @@ BENCHMARK(SphereMethods)->Apply(register_all)->Unit(benchmark::kMillisecond)->Us
 }  // namespace
 }  // namespace rayo
 
-int main(int argc, char** argv) {
-    _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
-    _MM_SET_DENORMALS_ZERO_MODE(_MM_DENORMALS_ZERO_ON);
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
-}
+RAYO_BENCHMARK_MAIN()

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "bench/bench_main.h"
 #include "shading/cellular.h"
 #include "shading/noise.h"
 #include "shading/texture.h"
@@ -100,4 +101,4 @@ BENCHMARK_CAPTURE(BM_TextureGradient, perlin, "perlin");
 }  // namespace
 }  // namespace rayo
 
-BENCHMARK_MAIN();
+RAYO_BENCHMARK_MAIN()
