@@ -54,17 +54,21 @@ inline const std::filesystem::path& scratch_dir() {
             ::access(shm.c_str(), W_OK) == 0 ? shm : std::filesystem::temp_directory_path();
         const std::filesystem::path d = base / ("rayo_fuzz_" + std::to_string(::getpid()));
         std::filesystem::create_directories(d);
-        // libFuzzer ends a clean run with exit(): remove the folder then (a crash keeps it).
-        std::atexit([] {
-            std::error_code ignored;
-            std::filesystem::remove_all(scratch_dir(), ignored);
-        });
         write_file(d / "tri.obj", kTriObj);
         write_file(d / "tri.mtl", kTriMtl);
         write_file(d / "tri.gltf", kTriGltf);
         write_file(d / "tri.bin", tri_bin());
         return d;
     }();
+    // libFuzzer ends a clean run with exit(): remove the folder then (a crash keeps it). Registered
+    // after `dir` is built, so the handler runs before `dir` is destroyed.
+    static const bool cleanup_registered = [] {
+        return std::atexit([] {
+                   std::error_code ignored;
+                   std::filesystem::remove_all(scratch_dir(), ignored);
+               }) == 0;
+    }();
+    (void)cleanup_registered;
     return dir;
 }
 
