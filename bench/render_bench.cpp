@@ -2,6 +2,8 @@
 // (SPD "balls" layout, depth 4 = 7381 spheres + a floor), 512×512 camera rays, one per pixel
 // centre. Counters: Mrays/s (rays per wall-clock second, all threads).
 //   CameraRays/<math>   Accel::intersect (Embree user geometry + our quadratic + hit record)
+//   CameraRaysCoherent  Accel::intersect_coherent on 8×8 tiles (the renderer's camera path)
+//   RawEmbreeUserStream rtcIntersect1M on the same tiles, COHERENT flag, no hit record
 //   RawEmbreeUser       rtcIntersect1 on the same Embree scene, no hit record (our ceiling)
 //   RawEmbreePoint      rtcIntersect1 on Embree's built-in RTC_GEOMETRY_TYPE_SPHERE_POINT
 //   FullRender          the whole Whitted render (shadow + reflection rays included)
@@ -87,6 +89,38 @@ void CameraRays(benchmark::State& state) {
     });
 }
 BENCHMARK(CameraRays)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Accel::intersect_coherent over 8×8 tiles: the renderer's camera-ray path (streams + records).
+void CameraRaysCoherent(benchmark::State& state) {
+    const Accel accel(flake().scene);
+    const std::vector<Ray> rays = camera_rays();
+    size_t hits = 0;
+    for (auto _ : state) {
+        std::atomic<size_t> frame_hits{0};
+        tbb::parallel_for(tbb::blocked_range2d<int>(0, kSize, 8, 0, kSize, 8),
+                          [&](const tbb::blocked_range2d<int>& tile) {
+                              Ray batch[64];
+                              SurfaceHit records[64];
+                              bool found[64];
+                              int n = 0;
+                              for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
+                                  for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
+                                      batch[n++] = rays[size_t(y) * kSize + x];
+                                  }
+                              }
+                              accel.intersect_coherent(batch, n, records, found);
+                              size_t local = 0;
+                              for (int i = 0; i < n; ++i) local += found[i];
+                              frame_hits += local;
+                          },
+                          tbb::simple_partitioner());
+        hits = frame_hits;
+    }
+    state.counters["Mrays/s"] = benchmark::Counter(
+        static_cast<double>(rays.size()) * state.iterations() / 1e6, benchmark::Counter::kIsRate);
+    state.counters["hit%"] = 100.0 * hits / rays.size();
+}
+BENCHMARK(CameraRaysCoherent)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void RawEmbreeUser(benchmark::State& state) {
     const Accel accel(flake().scene);
