@@ -186,9 +186,10 @@ class SceneParser {
         if (!value.is_number())
             fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
         const double v = value.get<double>();
-        if (!std::isfinite(v) || std::fabs(v) > std::numeric_limits<float>::max()) {
+        if (!std::isfinite(v) || std::fabs(v) > kMaxSceneMagnitude) {
             fail(pointer, std::string("expected ") + expected +
-                              " that fits a float (magnitude <= 3.4e38), got " + describe(value));
+                              " that fits a float with its square (magnitude <= 1e18), got " +
+                              describe(value));
         }
         if ((bound == Bound::Positive && !(v > 0.0)) ||
             (bound == Bound::NonNegative && !(v >= 0.0))) {
@@ -820,8 +821,9 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
 
     transform_mesh(mesh, transform);
     for (const Vec3& p : mesh.positions) {
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-            fail(child(pointer, "transform"), "the transformed mesh does not fit in floats");
+        if (!(max_abs_component(p) <= static_cast<float>(kMaxSceneMagnitude))) {
+            fail(child(pointer, "transform"),
+                 "the transformed mesh does not fit in floats (coordinates beyond 1e18)");
         }
     }
     stats.degenerate_triangles += drop_degenerate_triangles(mesh);

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/scene.h"
 
 namespace rayo {
 namespace {
@@ -55,8 +56,8 @@ bool finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-bool fits_float(double v) {
-    return std::isfinite(v) && std::fabs(v) <= std::numeric_limits<float>::max();
+bool within_scene_magnitude(double v) {
+    return std::isfinite(v) && std::fabs(v) <= kMaxSceneMagnitude;
 }
 
 void require_colour(const Vec3& c, const std::string& where, const std::string& what) {
@@ -162,8 +163,9 @@ void check_obj_text(const std::string& path) {
         char* end = nullptr;
         const double value = number_chars ? std::strtod(token.c_str(), &end) : 0.0;
         if (!number_chars || token.empty() || end != token.c_str() + token.size() ||
-            !std::isfinite(value) || std::fabs(value) > std::numeric_limits<float>::max()) {
-            fail("'" + tag + "': expected a finite number (in float range), got '" + token + "'");
+            !std::isfinite(value) || std::fabs(value) > kMaxSceneMagnitude) {
+            fail("'" + tag + "': expected a finite number (in float range) of magnitude <= 1e18, "
+                 "got '" + token + "'");
         }
     };
     while (std::getline(file, line)) {
@@ -341,7 +343,7 @@ Material material_from_gltf(const tinygltf::Material& m, size_t index, const std
     const std::string what = "material '" + out.name + "': ";
     if (pbr.baseColorFactor.size() < 3) throw InputError(where, what + "baseColorFactor");
     for (size_t i = 0; i < 3; ++i) {
-        if (!fits_float(pbr.baseColorFactor[i]) || pbr.baseColorFactor[i] < 0.0) {
+        if (!within_scene_magnitude(pbr.baseColorFactor[i]) || pbr.baseColorFactor[i] < 0.0) {
             throw InputError(where, what + "baseColorFactor must be finite and >= 0");
         }
     }

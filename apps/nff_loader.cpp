@@ -171,9 +171,10 @@ float parse_float(std::string_view token, const Where& where, const char* what) 
     if (error != std::errc() || stop != end) {
         throw InputError(where, std::string(what) + ": expected a number, got " + quoted(token));
     }
-    if (!std::isfinite(value) || std::abs(value) > std::numeric_limits<float>::max()) {
+    if (!std::isfinite(value) || std::abs(value) > kMaxSceneMagnitude) {
         throw InputError(where, std::string(what) +
-                                    ": expected a finite number (in float range), got " +
+                                    ": expected a finite number (in float range) of magnitude "
+                                    "<= 1e18, so that its square stays finite, got " +
                                     quoted(token));
     }
     return static_cast<float>(value);

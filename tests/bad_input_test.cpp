@@ -163,6 +163,8 @@ TEST_F(BadInputNff, NanInfiniteAndAbsurdMagnitudes) {
              "expected a finite number"},
             {"radius overflows float", kView + "s 0 0 0 1e39\n", "bad.nff:9",
              "expected a finite number (in float range)"},
+            {"radius whose square overflows float", kView + "s 0 0 0 1e30\n", "bad.nff:9",
+             "of magnitude <= 1e18"},
             {"radius overflows double", kView + "s 0 0 0 1e999\n", "bad.nff:9", "out of range"},
             {"infinite angle", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle inf\n", "bad.nff:5",
              "expected a finite number"},
@@ -258,6 +260,9 @@ TEST_F(BadInputJson, NanInfiniteAndAbsurdMagnitudes) {
             {"radius overflows float",
              with_object(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1e39})"),
              "bad.json#/objects/0/radius", "fits a float"},
+            {"radius whose square overflows float",
+             with_object(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1e30})"),
+             "bad.json#/objects/0/radius", "magnitude <= 1e18"},
             {"centre overflows float",
              with_object(R"({"type": "sphere", "center": [0, -4e38, 0], "radius": 1})"),
              "bad.json#/objects/0/center/1", "fits a float"},
@@ -386,10 +391,10 @@ TEST_F(BadInputObj, DegenerateFacesAndMissingMaterials) {
         write("m.obj", c.text);
         expect_refused("render scene.json -o out.png", c.place, c.expected, c.label);
     }
-    // A transform that pushes the mesh out of the float range.
-    write("m.obj", "v 10 0 0\nv 0 10 0\nv 0 0 10\nf 1 2 3\n");
+    // A transform that pushes the mesh past the scene magnitude (1e18, core/scene.h).
+    write("m.obj", "v 1000 0 0\nv 0 1000 0\nv 0 0 1000\nf 1 2 3\n");
     write("big.json",
-          with_object(R"({"type": "mesh", "file": "m.obj", "transform": {"scale": 1e38}})"));
+          with_object(R"({"type": "mesh", "file": "m.obj", "transform": {"scale": 1e17}})"));
     expect_refused("render big.json -o out.png", "big.json#/objects/0/transform",
                    "does not fit in floats", "transform overflow");
 }
