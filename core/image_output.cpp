@@ -5,8 +5,6 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/imageio.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -145,15 +143,11 @@ std::vector<float> display_pixels(const Film& film, const std::string& where,
         transform->setView(view.c_str());
         OCIO::ConstCPUProcessorRcPtr cpu =
             config->getProcessor(transform)->getDefaultCPUProcessor();
-        // Rows in parallel: a CPU processor's apply is thread-safe.
-        const int width = film.width();
-        tbb::parallel_for(tbb::blocked_range<int>(0, film.height(), 16),
-                          [&](const tbb::blocked_range<int>& rows) {
-                              OCIO::PackedImageDesc image(
-                                  rgba.data() + static_cast<size_t>(rows.begin()) * width * 4,
-                                  width, static_cast<long>(rows.size()), 4);
-                              cpu->apply(image);
-                          });
+        // One call over the whole image. (Rows in parallel through TBB were 0.05 s faster at
+        // 2048², but TBB's hand-off is invisible to ThreadSanitizer, which then reports the
+        // buffer made by this thread and read by TBB's already-running workers.)
+        OCIO::PackedImageDesc image(rgba.data(), film.width(), film.height(), 4);
+        cpu->apply(image);
     } catch (const OCIO::Exception& e) {
         throw InputError(where,
                          "cannot apply OCIO view '" + display + "/" + view + "': " + e.what());
@@ -168,13 +162,10 @@ std::vector<T> quantise(const std::vector<float>& rgba, int channels) {
     const float scale = static_cast<float>(std::numeric_limits<T>::max());
     std::vector<T> out(rgba.size() / 4 * channels);
     // Values are in [0,1] here: adding 0.5 and truncating rounds to nearest (lround is slow).
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, rgba.size() / 4, 1 << 14),
-                      [&](const tbb::blocked_range<size_t>& pixels) {
-                          for (size_t p = pixels.begin(); p < pixels.end(); ++p)
-                              for (int c = 0; c < channels; ++c)
-                                  out[p * channels + c] =
-                                      static_cast<T>(rgba[p * 4 + c] * scale + 0.5f);
-                      });
+    const size_t pixels = rgba.size() / 4;
+    for (size_t p = 0; p < pixels; ++p)
+        for (int c = 0; c < channels; ++c)
+            out[p * channels + c] = static_cast<T>(rgba[p * 4 + c] * scale + 0.5f);
     return out;
 }
 
