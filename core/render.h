@@ -17,6 +17,7 @@
 #include "core/progress.h"
 #include "core/sampling.h"
 #include "core/stats.h"
+#include "core/tsan_handoff.h"
 
 namespace rayo {
 
@@ -45,10 +46,14 @@ RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
     const float inverse_spp = 1.0f / static_cast<float>(spp);
     tbb::enumerable_thread_specific<RayCounters> counters;
 
+    // The caller's writes (film, counters) before every task; every task before the merge.
+    int handoff = 0;
+    tsan_release(&handoff);
     // Grain = one tile; simple_partitioner so tiles are exactly tile × tile.
     tbb::parallel_for(
         tbb::blocked_range2d<int>(0, height, tile, 0, width, tile),
         [&](const tbb::blocked_range2d<int>& range) {
+            tsan_acquire(&handoff);
             RayCounters& local = counters.local();
             if (!settings.coherent) {
                 for (int y = range.rows().begin(); y < range.rows().end(); ++y) {
@@ -88,8 +93,10 @@ RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
                 }
             }
             if (progress) progress->add(range.rows().size() * range.cols().size());
+            tsan_release(&handoff);
         },
         tbb::simple_partitioner());
+    tsan_acquire(&handoff);
 
     RayCounters total;
     for (const RayCounters& c : counters) total += c;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/tsan_handoff.h"
 
 namespace rayo {
 namespace {
@@ -204,13 +205,18 @@ Vec3 bump_normal(const Texture& texture, float strength, const Vec3& position, c
 
 Film texture_image(const Texture& texture, int width, int height, float pixels_per_unit) {
     Film film(width, height);
+    int handoff = 0;  // TBB's ordering, stated for ThreadSanitizer (core/tsan_handoff.h)
+    tsan_release(&handoff);
     tbb::parallel_for(0, height, [&](int j) {
+        tsan_acquire(&handoff);
         const float y = (static_cast<float>(height - j) - 0.5f) / pixels_per_unit;
         for (int i = 0; i < width; ++i) {
             const float x = (static_cast<float>(i) + 0.5f) / pixels_per_unit;
             film.set(i, j, texture.color(Vec3(x, y, 0.0f)));
         }
+        tsan_release(&handoff);
     });
+    tsan_acquire(&handoff);
     return film;
 }
 
