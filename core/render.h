@@ -49,7 +49,7 @@ RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
     // The caller's writes (film, counters) before every task; every task before the merge.
     int handoff = 0;
     tsan_release(&handoff);
-    // Grain = one tile; simple_partitioner so tiles are exactly tile × tile.
+    // Grain = one tile; simple_partitioner splits down to tiles of at most tile × tile.
     tbb::parallel_for(
         tbb::blocked_range2d<int>(0, height, tile, 0, width, tile),
         [&](const tbb::blocked_range2d<int>& range) {
