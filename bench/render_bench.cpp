@@ -90,28 +90,23 @@ void CameraRays(benchmark::State& state) {
 }
 BENCHMARK(CameraRays)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// Accel::intersect_coherent over 8×8 tiles: the renderer's camera-ray path (streams + records).
-void CameraRaysCoherent(benchmark::State& state) {
-    const Accel accel(flake().scene);
-    const std::vector<Ray> rays = camera_rays();
+// Traces the camera rays in 8×8 tiles (the renderer's batches): `trace_tile(rays, n)` returns
+// how many of the n rays hit.
+template <typename TraceTile>
+void trace_tiles(benchmark::State& state, const std::vector<Ray>& rays, TraceTile trace_tile) {
     size_t hits = 0;
     for (auto _ : state) {
         std::atomic<size_t> frame_hits{0};
         tbb::parallel_for(tbb::blocked_range2d<int>(0, kSize, 8, 0, kSize, 8),
                           [&](const tbb::blocked_range2d<int>& tile) {
                               Ray batch[64];
-                              SurfaceHit records[64];
-                              bool found[64];
                               int n = 0;
                               for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
                                   for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
                                       batch[n++] = rays[size_t(y) * kSize + x];
                                   }
                               }
-                              accel.intersect_coherent(batch, n, records, found);
-                              size_t local = 0;
-                              for (int i = 0; i < n; ++i) local += found[i];
-                              frame_hits += local;
+                              frame_hits += trace_tile(batch, n);
                           },
                           tbb::simple_partitioner());
         hits = frame_hits;
@@ -119,6 +114,19 @@ void CameraRaysCoherent(benchmark::State& state) {
     state.counters["Mrays/s"] = benchmark::Counter(
         static_cast<double>(rays.size()) * state.iterations() / 1e6, benchmark::Counter::kIsRate);
     state.counters["hit%"] = 100.0 * hits / rays.size();
+}
+
+// Accel::intersect_coherent over 8×8 tiles: the renderer's camera-ray path (streams + records).
+void CameraRaysCoherent(benchmark::State& state) {
+    const Accel accel(flake().scene);
+    trace_tiles(state, camera_rays(), [&](const Ray* batch, int n) {
+        SurfaceHit records[64];
+        bool found[64];
+        accel.intersect_coherent(batch, n, records, found);
+        size_t hits = 0;
+        for (int i = 0; i < n; ++i) hits += found[i];
+        return hits;
+    });
 }
 BENCHMARK(CameraRaysCoherent)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -139,36 +147,17 @@ BENCHMARK(RawEmbreeUser)->Unit(benchmark::kMillisecond)->UseRealTime();
 // traverses them as packets and calls the user-geometry callback with N lanes.
 void RawEmbreeUserStream(benchmark::State& state) {
     const Accel accel(flake().scene);
-    const std::vector<Ray> rays = camera_rays();
-    size_t hits = 0;
-    for (auto _ : state) {
-        std::atomic<size_t> frame_hits{0};
-        tbb::parallel_for(tbb::blocked_range2d<int>(0, kSize, 8, 0, kSize, 8),
-                          [&](const tbb::blocked_range2d<int>& tile) {
-                              RTCRayHit batch[64];
-                              int n = 0;
-                              for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
-                                  for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
-                                      batch[n++] = to_rayhit(rays[size_t(y) * kSize + x]);
-                                  }
-                              }
-                              RTCIntersectContext context;
-                              rtcInitIntersectContext(&context);
-                              context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-                              rtcIntersect1M(accel.rtc_scene(), &context, batch, n,
-                                             sizeof(RTCRayHit));
-                              size_t local = 0;
-                              for (int i = 0; i < n; ++i) {
-                                  local += batch[i].hit.geomID != RTC_INVALID_GEOMETRY_ID;
-                              }
-                              frame_hits += local;
-                          },
-                          tbb::simple_partitioner());
-        hits = frame_hits;
-    }
-    state.counters["Mrays/s"] = benchmark::Counter(
-        static_cast<double>(rays.size()) * state.iterations() / 1e6, benchmark::Counter::kIsRate);
-    state.counters["hit%"] = 100.0 * hits / rays.size();
+    trace_tiles(state, camera_rays(), [&](const Ray* rays, int n) {
+        RTCRayHit batch[64];
+        for (int i = 0; i < n; ++i) batch[i] = to_rayhit(rays[i]);
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        rtcIntersect1M(accel.rtc_scene(), &context, batch, n, sizeof(RTCRayHit));
+        size_t hits = 0;
+        for (int i = 0; i < n; ++i) hits += batch[i].hit.geomID != RTC_INVALID_GEOMETRY_ID;
+        return hits;
+    });
 }
 BENCHMARK(RawEmbreeUserStream)->Unit(benchmark::kMillisecond)->UseRealTime();
 
