@@ -240,19 +240,22 @@ TEST(SphereMethodChoice, TinySpheresFarFromTheOriginAreReportedNotDoubled) {
 }
 
 TEST(SphereMethods, SphereBelowOneUlpOfItsPositionGivesFiniteHits) {
+    // Radius 1e-3 at x = 1e5, where floats are 0.0078 apart: a ray along x hits it, and the hit
+    // point o + t·d rounds onto the centre. The hit must still be finite (it faces the ray).
     Scene scene;
     scene.spheres.push_back({Vec3(1e5f, 0.0f, 0.0f), 1e-3f, 0});
     const Accel accel(scene, options_for("user"));
     Ray ray;
-    ray.origin = Vec3(1e5f, 0.0f, 10.0f);
-    ray.direction = Vec3(0.0f, 0.0f, -1.0f);
+    ray.origin = Vec3(1e5f + 16.0f, 0.0f, 0.0f);
+    ray.direction = Vec3(-1.0f, 0.0f, 0.0f);
     SurfaceHit hit;
-    if (accel.intersect(ray, hit)) {
-        for (int a = 0; a < 3; ++a) {
-            EXPECT_TRUE(std::isfinite(hit.position[a]));
-            EXPECT_TRUE(std::isfinite(hit.geometric_normal[a]));
-        }
+    ASSERT_TRUE(accel.intersect(ray, hit));
+    ASSERT_EQ(ray.at(hit.t), scene.spheres[0].center);  // the degenerate case, really
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_TRUE(std::isfinite(hit.position[a]));
+        EXPECT_TRUE(std::isfinite(hit.geometric_normal[a]));
     }
+    EXPECT_EQ(hit.geometric_normal, -ray.direction);
 }
 
 TEST(SphereMethodChoice, ExplicitChoicesAreKept) {
