@@ -20,7 +20,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 // Loaders validate as they read; this guards scenes built in code (and any loader slip) against
-// material ids that would index past the material table.
+// material and texture ids that would index past their tables.
 void check_material_ids(const SceneDescription& d) {
     const size_t count = d.shading.materials.size();
     auto check = [&](uint32_t id, const std::string& what) {
@@ -44,6 +44,17 @@ void check_material_ids(const SceneDescription& d) {
                                            std::to_string(mesh.materials.size()) + " material ids");
         }
         for (uint32_t id : mesh.materials) check(id, "mesh " + std::to_string(m));
+    }
+    const auto texture_count = static_cast<int32_t>(d.shading.textures.size());
+    for (const Material& material : d.shading.materials) {
+        const MaterialTextures& t = material.textures;
+        for (int32_t id : {t.ka, t.kd, t.ks, t.bump}) {
+            if (id != kNoTexture && (id < 0 || id >= texture_count)) {
+                throw InputError(d.source, "material '" + material.name + "' uses texture " +
+                                               std::to_string(id) + " but only " +
+                                               std::to_string(texture_count) + " are defined");
+            }
+        }
     }
 }
 

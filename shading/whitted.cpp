@@ -14,9 +14,9 @@ float max_component(const Vec3& v) {
     return glm::max(v.x, glm::max(v.y, v.z));
 }
 
-// The texture of index `id`, or null for kNoTexture (or an index the loaders would have refused).
+// The texture of index `id`, or null for kNoTexture (render_scene has checked the ids).
 const Texture* texture_at(const std::vector<Texture>& textures, int32_t id) {
-    return id >= 0 && static_cast<size_t>(id) < textures.size() ? &textures[id] : nullptr;
+    return id == kNoTexture ? nullptr : &textures[static_cast<size_t>(id)];
 }
 
 // The effective coefficients of a textured material at `position` (seed 003 ch. 3): each textured

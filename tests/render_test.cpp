@@ -213,5 +213,13 @@ TEST(RenderValidation, MaterialIdPastTheTableIsAnInputError) {
     EXPECT_THROW(render_scene(d, 1, false), InputError);
 }
 
+TEST(RenderValidation, TextureIdPastTheTableIsAnInputError) {
+    SceneDescription d = lambert_sphere_scene(8);
+    d.shading.materials[0].textures.kd = 2;  // no textures defined
+    EXPECT_THROW(render_scene(d, 1, false), InputError);
+    d.shading.materials[0].textures.kd = kNoTexture;
+    EXPECT_NO_THROW(render_scene(d, 1, false));
+}
+
 }  // namespace
 }  // namespace rayo
