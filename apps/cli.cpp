@@ -104,10 +104,10 @@ double parse_number(const std::string& flag, const std::string& text, double min
     return value;
 }
 
-// Walks a command's arguments: `next()` moves to the next one, `value()` takes the argument
+// Walks a command's arguments: `next()` moves to the next one, `cursor.value()` takes the argument
 // that follows the current flag (a UsageError when there is none).
 class ArgCursor {
-public:
+  public:
     explicit ArgCursor(const std::vector<std::string>& args) : m_args(args) {}
     bool next() { return ++m_index < m_args.size(); }
     const std::string& current() const { return m_args[m_index]; }
@@ -116,7 +116,7 @@ public:
         return m_args[++m_index];
     }
 
-private:
+  private:
     const std::vector<std::string>& m_args;
     size_t m_index = static_cast<size_t>(-1);
 };
@@ -140,29 +140,28 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
     ArgCursor cursor(args);
     while (cursor.next()) {
         const std::string& a = cursor.current();
-        auto value = [&]() -> const std::string& { return cursor.value(); };
         if (a == "-o" || a == "--output") {
-            r.output = value();
+            r.output = cursor.value();
         } else if (a == "--width") {
-            r.width = parse_int(a, value(), 1, kMaxImageSide);
+            r.width = parse_int(a, cursor.value(), 1, kMaxImageSide);
         } else if (a == "--height") {
-            r.height = parse_int(a, value(), 1, kMaxImageSide);
+            r.height = parse_int(a, cursor.value(), 1, kMaxImageSide);
         } else if (a == "--spp") {
-            r.spp = parse_int(a, value(), 1, kMaxSpp);
+            r.spp = parse_int(a, cursor.value(), 1, kMaxSpp);
         } else if (a == "--threads") {
-            r.threads = parse_int(a, value(), 1, 4096);
+            r.threads = parse_int(a, cursor.value(), 1, 4096);
         } else if (a == "--max-depth") {
-            r.max_depth = parse_int(a, value(), 0, kMaxDepthLimit);
+            r.max_depth = parse_int(a, cursor.value(), 0, kMaxDepthLimit);
         } else if (a == "--tile-size") {
-            r.tile_size = parse_int(a, value(), 1, 4096);
+            r.tile_size = parse_int(a, cursor.value(), 1, 4096);
         } else if (a == "--sphere-math") {
-            const std::string& m = value();
+            const std::string& m = cursor.value();
             r.sphere_math = parse_sphere_math(m);
             if (!r.sphere_math) {
                 throw UsageError(a + ": expected 'stable', 'seed' or 'double', got '" + m + "'");
             }
         } else if (a == "--sphere-method") {
-            const std::string& m = value();
+            const std::string& m = cursor.value();
             r.sphere_method = parse_sphere_method(m);
             if (!r.sphere_method) {
                 throw UsageError(a + ": expected auto, user, bruteforce, embree-point or mesh:N " +
@@ -170,17 +169,17 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
                                  "'");
             }
         } else if (a == "--max-error-px") {
-            r.max_error_px = static_cast<float>(parse_number(a, value(), 1e-6, 1e6));
+            r.max_error_px = static_cast<float>(parse_number(a, cursor.value(), 1e-6, 1e6));
         } else if (a == "--flat-spheres") {
             r.flat_spheres = true;
         } else if (a == "--single-rays") {
             r.single_rays = true;
         } else if (a == "--display") {
-            r.output_options.display = value();
+            r.output_options.display = cursor.value();
         } else if (a == "--view") {
-            r.output_options.view = value();
+            r.output_options.view = cursor.value();
         } else if (a == "--range") {
-            const std::string& m = value();
+            const std::string& m = cursor.value();
             if (m == "clamp") {
                 r.output_options.range = RangeMode::Clamp;
             } else if (m == "normalize") {
@@ -326,15 +325,15 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
         const RayCounters& c = result.counters;
         const double mrays =
             result.render_seconds > 0 ? c.total_rays() / result.render_seconds / 1e6 : 0.0;
-        out << "rayo: " << output << " " << cam.width << "x" << cam.height << " "
-            << d.settings.spp << "spp " << result.threads << " threads | parse "
-            << format_duration(parse_s) << ", bvh " << format_duration(result.bvh_seconds)
-            << ", render " << format_duration(result.render_seconds) << ", write "
-            << format_duration(write_s) << " | rays " << human_count(c.total_rays())
-            << " (camera " << human_count(c.camera) << ", shadow " << human_count(c.shadow)
-            << ", reflect " << human_count(c.reflection) << ", refract "
-            << human_count(c.refraction) << ") " << std::fixed << std::setprecision(2) << mrays
-            << " Mrays/s | total " << format_duration(seconds_since(total_start)) << "\n";
+        out << "rayo: " << output << " " << cam.width << "x" << cam.height << " " << d.settings.spp
+            << "spp " << result.threads << " threads | parse " << format_duration(parse_s)
+            << ", bvh " << format_duration(result.bvh_seconds) << ", render "
+            << format_duration(result.render_seconds) << ", write " << format_duration(write_s)
+            << " | rays " << human_count(c.total_rays()) << " (camera " << human_count(c.camera)
+            << ", shadow " << human_count(c.shadow) << ", reflect " << human_count(c.reflection)
+            << ", refract " << human_count(c.refraction) << ") " << std::fixed
+            << std::setprecision(2) << mrays << " Mrays/s | total "
+            << format_duration(seconds_since(total_start)) << "\n";
     }
     return 0;
 }
@@ -348,11 +347,10 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
     ArgCursor cursor(args);
     while (cursor.next()) {
         const std::string& a = cursor.current();
-        auto value = [&]() -> const std::string& { return cursor.value(); };
         if (a == "-o" || a == "--output") {
-            output = value();
+            output = cursor.value();
         } else if (a == "--size") {
-            const std::string& v = value();
+            const std::string& v = cursor.value();
             const size_t x = v.find('x');
             if (x == std::string::npos) {
                 throw UsageError(a + ": expected WxH (e.g. 512x512), got '" + v + "'");
@@ -360,9 +358,9 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
             width = parse_int(a + " width", v.substr(0, x), 1, kMaxImageSide);
             height = parse_int(a + " height", v.substr(x + 1), 1, kMaxImageSide);
         } else if (a == "--scale") {
-            scale = static_cast<float>(parse_number(a, value(), 1e-6, 1e6));
+            scale = static_cast<float>(parse_number(a, cursor.value(), 1e-6, 1e6));
         } else if (a == "--seed") {
-            seed = static_cast<uint32_t>(parse_int(a, value(), 0, 2147483647));
+            seed = static_cast<uint32_t>(parse_int(a, cursor.value(), 0, 2147483647));
         } else if (!a.empty() && a[0] == '-') {
             throw UsageError("unknown option '" + a + "' (see rayo --help)");
         } else if (!name) {
