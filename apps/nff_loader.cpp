@@ -545,7 +545,6 @@ class NffParser {
             if (patch) {
                 // Tessellated surfaces collapse at poles and seams (SPD teapot_1 has four such
                 // patches): skip them, as they cover no area.
-                if (m_info) ++m_info->skipped_degenerate_patches;
                 m_out.warnings.push_back(std::string(where) + ": degenerate patch (zero area) skipped");
                 m_out.skipped_triangles += m_vertices.size() - 2;
                 return;

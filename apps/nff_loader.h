@@ -11,8 +11,7 @@ namespace rayo {
 
 // Facts about a load that are not errors but that a caller may want to report.
 struct NffLoadInfo {
-    size_t lines = 0;                       // lines in the file
-    size_t skipped_degenerate_patches = 0;  // `pp` patches of zero area (tessellation slivers)
+    size_t lines = 0;  // lines in the file
 };
 
 // Reads the whole file at once and parses it. Throws InputError: where = path and message

@@ -24,11 +24,6 @@ struct Sphere {
     uint32_t material = 0;
 };
 
-struct SphereHit {
-    float t = 0.0f;
-    bool far_root = false;  // hit at t1: the ray started inside, the normal is flipped
-};
-
 // `direction` must be unit length. Returns true and fills `hit` for the nearest root in
 // (tnear, tfar). Templated on the scalar so the double reference shares the code.
 template <typename T>
