@@ -4,26 +4,20 @@
 // file behind (no image, no temporary). The loaders' own tests (nff_loader_test.cpp,
 // json_loader_test.cpp, mesh_loader_test.cpp) check the messages in detail; cli_test.cpp covers
 // the flags and NFF cameras; this file covers each kind of bad input for each format at the CLI.
-#include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
+
+#include "tests/cli_fixture.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CommandResult {
-    int exit_code;
-    std::string output;  // stdout and stderr together
-};
+using rayo_test::CommandResult;
 
 // One bad input: the file's text, the place the error must name and what it must say.
 struct BadCase {
@@ -33,45 +27,12 @@ struct BadCase {
     std::string expected;
 };
 
-class BadInput : public ::testing::Test {
+class BadInput : public rayo_test::CliFixture {
   protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        m_dir = fs::temp_directory_path() / ("rayo_bad_input_" + std::to_string(::getpid()) + "_" +
-                                             info->test_suite_name() + "_" + info->name());
-        fs::remove_all(m_dir);
-        fs::create_directories(m_dir);
-    }
-    void TearDown() override { fs::remove_all(m_dir); }
-
-    CommandResult run(const std::string& args) {
-        const fs::path log = m_dir.parent_path() / (m_dir.filename().string() + ".log");
-        const std::string command = "cd '" + m_dir.string() + "' && '" RAYO_CLI_PATH "' " + args +
-                                    " > '" + log.string() + "' 2>&1";
-        const int status = std::system(command.c_str());
-        std::ifstream in(log);
-        std::stringstream text;
-        text << in.rdbuf();
-        fs::remove(log);
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
-    }
-
-    void write(const std::string& name, const std::string& text) {
-        std::ofstream(m_dir / name, std::ios::binary) << text;
-    }
-
     // Copies a file of tests/data/bad/ into the test's folder.
     void copy_data(const std::string& name) {
         fs::copy_file(fs::path(RAYO_TEST_DATA_DIR) / "bad" / name, m_dir / name,
                       fs::copy_options::overwrite_existing);
-    }
-
-    std::set<std::string> listing() const {
-        std::set<std::string> names;
-        for (const auto& e : fs::recursive_directory_iterator(m_dir)) {
-            names.insert(fs::relative(e.path(), m_dir).string());
-        }
-        return names;
     }
 
     // Runs `args`, expects exit status `exit_code`, "rayo: error: " followed by the place, the
@@ -98,8 +59,6 @@ class BadInput : public ::testing::Test {
             fs::remove(m_dir / scene_name);
         }
     }
-
-    fs::path m_dir;
 };
 
 class BadInputNff : public BadInput {};

@@ -1,64 +1,26 @@
 // The `rayo` executable end to end: exit status, error messages that name the place, and no
 // output file left behind on failure. Runs the built binary (RAYO_CLI_PATH) in a temp folder.
-#include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
+
+#include "tests/cli_fixture.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CommandResult {
-    int exit_code;
-    std::string output;  // stdout and stderr together
-};
+using rayo_test::CommandResult;
 
-class CliTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        m_dir = fs::temp_directory_path() /
-                ("rayo_cli_test_" + std::to_string(::getpid()) + "_" +
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(m_dir);
-        fs::create_directories(m_dir);
-    }
-    void TearDown() override { fs::remove_all(m_dir); }
-
-    CommandResult run(const std::string& args) {
-        const fs::path log = m_dir / "log.txt";
-        const std::string command =
-            "cd '" + m_dir.string() + "' && '" RAYO_CLI_PATH "' " + args + " > '" + log.string() +
-            "' 2>&1";
-        const int status = std::system(command.c_str());
-        std::ifstream in(log);
-        std::stringstream text;
-        text << in.rdbuf();
-        fs::remove(log);
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
-    }
-
-    fs::path write(const std::string& name, const std::string& text) {
-        const fs::path p = m_dir / name;
-        std::ofstream(p) << text;
-        return p;
-    }
-
-    // Files in the folder other than the inputs the test wrote.
-    int count_files_except(const std::string& keep) {
+class CliTest : public rayo_test::CliFixture {
+  protected:
+    // Files in the folder other than `keep` (an input the test wrote).
+    int count_files_except(const std::string& keep) const {
         int n = 0;
-        for (const auto& e : fs::directory_iterator(m_dir)) {
-            if (e.path().filename() != keep) ++n;
-        }
+        for (const std::string& name : listing()) n += name != keep;
         return n;
     }
-
-    fs::path m_dir;
 };
 
 const char* const kSmallNff =
@@ -121,7 +83,8 @@ TEST_F(CliTest, BadFlagsAreRefusedWithoutOutput) {
         {"render --spp 0 -o x.png", "--spp: expected an integer"},
         {"render --threads 0 -o x.png", "--threads: expected an integer"},
         {"render --max-depth 1000 -o x.png", "--max-depth: expected an integer in [0, 64]"},
-        {"render --sphere-math fast -o x.png", "--sphere-math: expected 'stable', 'seed' or 'double'"},
+        {"render --sphere-math fast -o x.png",
+         "--sphere-math: expected 'stable', 'seed' or 'double'"},
         {"render --sphere-method mesh:9 -o x.png", "--sphere-method: expected auto, user"},
         {"render --sphere-method bvh -o x.png", "got 'bvh'"},
         {"render --max-error-px 0 -o x.png", "--max-error-px: expected a number in [1e-06"},
@@ -208,8 +171,7 @@ TEST_F(CliTest, EverySphereMethodRendersAndStatsSayWhichRan) {
     const CommandResult r = run("render scene.nff --stats -o m.exr --sphere-math double");
     EXPECT_NE(r.output.find("user (double)"), std::string::npos) << r.output;
     const CommandResult a = run("render scene.nff --stats -o m.exr");
-    EXPECT_NE(a.output.find("user (stable): user/stable: analytic"), std::string::npos)
-        << a.output;
+    EXPECT_NE(a.output.find("user (stable): user/stable: analytic"), std::string::npos) << a.output;
 }
 
 TEST_F(CliTest, WidthAloneKeepsAspectRatio) {
