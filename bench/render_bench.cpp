@@ -14,8 +14,8 @@
 
 #include <vector>
 
-#include "apps/renderer.h"
-#include "apps/sphereflake.h"
+#include "apps/scene/renderer.h"
+#include "apps/scene/sphereflake.h"
 #include "bench/bench_main.h"
 #include "core/accel.h"
 #include "core/camera.h"

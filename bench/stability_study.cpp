@@ -8,7 +8,7 @@
 #include <iostream>
 #include <string>
 
-#include "core/sphere_stability.h"
+#include "bench/lab/sphere_stability.h"
 #include "shading/whitted.h"
 
 int main(int argc, char** argv) {

@@ -1,5 +1,5 @@
 # libFuzzer targets (issue 5): one executable per scene reader, fuzz/<reader>_fuzz.cpp, built with
-# clang's -fsanitize=fuzzer. The loaders (rayo_app) get coverage instrumentation so libFuzzer can
+# clang's -fsanitize=fuzzer. The loaders (rayo_scene) get coverage instrumentation so libFuzzer can
 # steer; core and shading do not, which keeps the sanitizer test run that shares this build fast.
 # Each fuzzer is a ctest entry `fuzz_<reader>` that runs for RAYO_FUZZ_SECONDS over a copy of its
 # seed corpus fuzz/corpus/<reader>/ (cmake/run_fuzzer.cmake); fuzz/run.sh runs them longer.
@@ -10,7 +10,7 @@ endif()
 
 set(RAYO_FUZZ_SECONDS 20 CACHE STRING "Seconds each fuzzer runs as a ctest entry")
 
-target_compile_options(rayo_app PRIVATE -fsanitize=fuzzer-no-link)
+target_compile_options(rayo_scene PRIVATE -fsanitize=fuzzer-no-link)
 
 file(GLOB RAYO_FUZZ_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/*_fuzz.cpp)
 foreach(src ${RAYO_FUZZ_SOURCES})
@@ -19,7 +19,7 @@ foreach(src ${RAYO_FUZZ_SOURCES})
   add_executable(${name} ${src})
   target_compile_options(${name} PRIVATE -fsanitize=fuzzer)
   target_link_options(${name} PRIVATE -fsanitize=fuzzer)
-  target_link_libraries(${name} PRIVATE rayo_app)
+  target_link_libraries(${name} PRIVATE rayo_scene)
   set(dict ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/${reader}.dict)
   if(NOT EXISTS ${dict})
     set(dict "")

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/icosphere.h"
+#include "core/shapes/icosphere.h"
 
 namespace rayo {
 namespace {

@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "core/camera.h"
-#include "core/cone.h"
-#include "core/mesh.h"
-#include "core/sphere.h"
+#include "core/shapes/cone.h"
+#include "core/shapes/mesh.h"
+#include "core/shapes/sphere.h"
 
 namespace rayo {
 

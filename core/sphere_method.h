@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "core/sphere.h"
+#include "core/shapes/sphere.h"
 
 namespace rayo {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "apps/json_loader.h"
+#include "apps/scene/json_loader.h"
 #include "fuzz/fuzz_files.h"
 #include "fuzz/scene_invariants.h"
 

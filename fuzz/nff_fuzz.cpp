@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "apps/nff_loader.h"
+#include "apps/scene/nff_loader.h"
 #include "fuzz/scene_invariants.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

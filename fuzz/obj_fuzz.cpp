@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/mesh_loader.h"
+#include "apps/scene/mesh_loader.h"
 #include "fuzz/fuzz_files.h"
 #include "fuzz/scene_invariants.h"
 

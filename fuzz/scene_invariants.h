@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "apps/scene_description.h"
+#include "apps/scene/scene_description.h"
 #include "core/camera.h"
 #include "core/error.h"
 

@@ -1,0 +1,481 @@
+#include "apps/cli/cli.h"
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench/lab/accuracy_bench.h"
+#include "apps/scene/default_scene.h"
+#include "apps/scene/renderer.h"
+#include "apps/scene/scene_loader.h"
+#include "core/error.h"
+#include "core/image/image_output.h"
+#include "core/progress.h"
+#include "shading/texture.h"
+
+namespace rayo {
+namespace {
+
+constexpr int kExitInput = 1;
+constexpr int kExitUsage = 2;
+constexpr int kMaxDepthLimit = 64;
+constexpr int kMaxSpp = 1 << 16;
+
+const char* const kUsage = R"(rayo — a Whitted ray tracer (Embree + TBB + OpenImageIO + OpenColorIO)
+
+usage:
+  rayo render [SCENE] [options]   render SCENE (.json or .nff); the built-in scene without one
+  rayo info SCENE                 load SCENE and print what it contains
+  rayo bench accuracy -o DIR [--size N]
+                                  the sphere-method study: CSV and charts (gnuplot) in DIR,
+                                  scenes of N×N pixels [384]
+  rayo texture NAME [options]     write a procedural texture flat (the plane z = 0)
+  rayo --help | --version
+
+render options:
+  -o, --output FILE        output image: .exr (linear float), .png, .tif, .jpg (display view)
+                           [default: SCENE's name with .png, or default.png]
+  --width W, --height H    resolution (one alone keeps the scene's aspect ratio)
+  --spp N                  samples per pixel, stratified jitter [scene's, default 1]
+  --threads N              worker threads [all cores]
+  --max-depth N            maximum reflection/refraction depth, 0..64 [scene's, default 5]
+  --tile-size N            tile side in pixels [16]
+  --sphere-method M        auto (default), user, bruteforce, embree-point, mesh:N (N 0..7:
+                           20·4^N triangles per sphere)
+  --sphere-math P          stable (default), seed (seed 000's algebraic form), double
+  --max-error-px E         auto's error budget in pixels [0.5]
+  --flat-spheres           mesh:N spheres with flat facets instead of smooth normals
+  --single-rays            trace camera and shadow rays one by one instead of as coherent
+                           Embree streams per tile (same image; for comparisons)
+  --display D, --view V    OCIO display and view for PNG/TIFF/JPEG [config defaults]
+  --range R                clamp (default) or normalize (divide by the image maximum)
+  --half                   write EXR as half float
+  --quiet                  no progress bar and no summary line
+  --stats                  print the full statistics table
+
+texture options (NAME: constant, value, perlin, turbulence, cellular, marble, warped,
+pool-bottom; docs/textures.md):
+  -o, --output FILE        output image, as for render [NAME.png]
+  --size WxH               image size in pixels [512x512]; 64 pixels per world unit
+  --scale S                world units per feature, 1e-6..1e6 [1: the seed's 64-pixel cells]
+  --seed N                 0..2147483647 [0]
+
+The OCIO config is $OCIO when set, else rayo's own (sRGB display: sRGB, ACES 1.0 SDR-video, Raw).
+)";
+
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+int parse_int(const std::string& flag, const std::string& text, int min_value, int max_value) {
+    int value = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (ec != std::errc() || ptr != end || value < min_value || value > max_value) {
+        throw UsageError(flag + ": expected an integer in [" + std::to_string(min_value) + ", " +
+                         std::to_string(max_value) + "], got '" + text + "'");
+    }
+    return value;
+}
+
+// A number in [min_value, max_value] (finite), or a UsageError naming the flag.
+double parse_number(const std::string& flag, const std::string& text, double min_value,
+                    double max_value) {
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) ||
+        value < min_value || value > max_value) {
+        std::ostringstream expected;
+        expected << flag << ": expected a number in [" << min_value << ", " << max_value
+                 << "], got '" << text << "'";
+        throw UsageError(expected.str());
+    }
+    return value;
+}
+
+// Walks a command's arguments: `next()` moves to the next one, `cursor.value()` takes the argument
+// that follows the current flag (a UsageError when there is none).
+class ArgCursor {
+  public:
+    explicit ArgCursor(const std::vector<std::string>& args) : m_args(args) {}
+    bool next() { return ++m_index < m_args.size(); }
+    const std::string& current() const { return m_args[m_index]; }
+    const std::string& value() {
+        if (m_index + 1 >= m_args.size()) throw UsageError(current() + ": missing value");
+        return m_args[++m_index];
+    }
+
+  private:
+    const std::vector<std::string>& m_args;
+    size_t m_index = static_cast<size_t>(-1);
+};
+
+struct RenderArgs {
+    std::optional<std::string> scene_path;
+    std::optional<std::string> output;
+    std::optional<int> width, height, spp, threads, max_depth, tile_size;
+    std::optional<SphereMath> sphere_math;
+    std::optional<SphereRepresentation> sphere_method;
+    std::optional<float> max_error_px;
+    bool flat_spheres = false;
+    bool single_rays = false;
+    OutputOptions output_options;
+    bool quiet = false;
+    bool stats = false;
+};
+
+RenderArgs parse_render_args(const std::vector<std::string>& args) {
+    RenderArgs r;
+    ArgCursor cursor(args);
+    while (cursor.next()) {
+        const std::string& a = cursor.current();
+        if (a == "-o" || a == "--output") {
+            r.output = cursor.value();
+        } else if (a == "--width") {
+            r.width = parse_int(a, cursor.value(), 1, kMaxImageSide);
+        } else if (a == "--height") {
+            r.height = parse_int(a, cursor.value(), 1, kMaxImageSide);
+        } else if (a == "--spp") {
+            r.spp = parse_int(a, cursor.value(), 1, kMaxSpp);
+        } else if (a == "--threads") {
+            r.threads = parse_int(a, cursor.value(), 1, 4096);
+        } else if (a == "--max-depth") {
+            r.max_depth = parse_int(a, cursor.value(), 0, kMaxDepthLimit);
+        } else if (a == "--tile-size") {
+            r.tile_size = parse_int(a, cursor.value(), 1, 4096);
+        } else if (a == "--sphere-math") {
+            const std::string& m = cursor.value();
+            r.sphere_math = parse_sphere_math(m);
+            if (!r.sphere_math) {
+                throw UsageError(a + ": expected 'stable', 'seed' or 'double', got '" + m + "'");
+            }
+        } else if (a == "--sphere-method") {
+            const std::string& m = cursor.value();
+            r.sphere_method = parse_sphere_method(m);
+            if (!r.sphere_method) {
+                throw UsageError(a + ": expected auto, user, bruteforce, embree-point or mesh:N " +
+                                 "(N in 0.." + std::to_string(kMaxMeshLevel) + "), got '" + m +
+                                 "'");
+            }
+        } else if (a == "--max-error-px") {
+            r.max_error_px = static_cast<float>(parse_number(a, cursor.value(), 1e-6, 1e6));
+        } else if (a == "--flat-spheres") {
+            r.flat_spheres = true;
+        } else if (a == "--single-rays") {
+            r.single_rays = true;
+        } else if (a == "--display") {
+            r.output_options.display = cursor.value();
+        } else if (a == "--view") {
+            r.output_options.view = cursor.value();
+        } else if (a == "--range") {
+            const std::string& m = cursor.value();
+            if (m == "clamp") {
+                r.output_options.range = RangeMode::Clamp;
+            } else if (m == "normalize") {
+                r.output_options.range = RangeMode::Normalize;
+            } else {
+                throw UsageError(a + ": expected 'clamp' or 'normalize', got '" + m + "'");
+            }
+        } else if (a == "--half") {
+            r.output_options.half_float_exr = true;
+        } else if (a == "--quiet" || a == "-q") {
+            r.quiet = true;
+        } else if (a == "--stats") {
+            r.stats = true;
+        } else if (!a.empty() && a[0] == '-') {
+            throw UsageError("unknown option '" + a + "' (see rayo --help)");
+        } else if (!r.scene_path) {
+            r.scene_path = a;
+        } else {
+            throw UsageError("unexpected argument '" + a + "': only one scene per render");
+        }
+    }
+    return r;
+}
+
+// Command-line values override the scene's. One of width/height alone keeps the aspect ratio.
+void apply_overrides(const RenderArgs& args, SceneDescription& d) {
+    CameraDesc& camera = d.scene.camera;
+    if (args.width && args.height) {
+        camera.width = *args.width;
+        camera.height = *args.height;
+    } else if (args.width || args.height) {
+        const double aspect = static_cast<double>(camera.width) / camera.height;
+        if (args.width) {
+            camera.width = *args.width;
+            camera.height = std::max(1, static_cast<int>(std::lround(*args.width / aspect)));
+        } else {
+            camera.height = *args.height;
+            camera.width = std::max(1, static_cast<int>(std::lround(*args.height * aspect)));
+        }
+    }
+    if (args.spp) d.settings.spp = *args.spp;
+    if (args.max_depth) d.settings.whitted.max_depth = *args.max_depth;
+    if (args.tile_size) d.settings.tile_size = *args.tile_size;
+    if (args.sphere_math) d.settings.sphere_math = *args.sphere_math;
+    if (args.sphere_method) d.settings.spheres = *args.sphere_method;
+    if (args.flat_spheres) d.settings.spheres.mesh_smooth = false;
+    if (args.single_rays) d.settings.coherent = false;
+    if (args.max_error_px) d.settings.max_error_px = *args.max_error_px;
+}
+
+std::string default_output_path(const RenderArgs& args) {
+    if (!args.scene_path) return "default.png";
+    return std::filesystem::path(*args.scene_path).stem().string() + ".png";
+}
+
+std::string human_count(double n) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(n >= 1e9 ? 2 : 1);
+    if (n >= 1e9) {
+        s << n / 1e9 << "G";
+    } else if (n >= 1e6) {
+        s << n / 1e6 << "M";
+    } else if (n >= 1e3) {
+        s << n / 1e3 << "k";
+    } else {
+        s << std::setprecision(0) << n;
+    }
+    return s.str();
+}
+
+void print_stats_table(std::ostream& out, const SceneDescription& d, const RenderResult& r,
+                       double parse_s, double write_s) {
+    const RayCounters& c = r.counters;
+    const double mrays = r.render_seconds > 0 ? c.total_rays() / r.render_seconds / 1e6 : 0.0;
+    out << "statistics\n"
+        << "  scene                       " << d.source << "\n"
+        << "  resolution                  " << d.scene.camera.width << "x" << d.scene.camera.height
+        << ", " << d.settings.spp << " spp, tile " << d.settings.tile_size << "\n"
+        << "  threads                     " << r.threads << "\n"
+        << "  sphere method               " << sphere_method_name(r.spheres.spheres) << " ("
+        << sphere_math_name(r.spheres.math) << "): " << r.spheres.reason << "\n"
+        << "  ray batches                 "
+        << (r.coherent ? "coherent Embree streams per tile (camera, shadow)" : "single rays")
+        << "\n"
+        << "  primitives                  " << r.primitives << " (" << d.scene.spheres.size()
+        << " spheres, " << d.scene.cones.size() << " cones, " << d.scene.triangle_count()
+        << " triangles)\n"
+        << "  materials, lights           " << d.shading.materials.size() << ", "
+        << d.shading.lights.size() << "\n"
+        << "  max depth                   " << d.settings.whitted.max_depth << "\n"
+        << "  time parse                  " << format_duration(parse_s) << "\n"
+        << "  time BVH build              " << format_duration(r.bvh_seconds) << "\n"
+        << "  time render                 " << format_duration(r.render_seconds) << "\n"
+        << "  time write                  " << format_duration(write_s) << "\n"
+        << "  rays camera                 " << c.camera << "\n"
+        << "  rays shadow                 " << c.shadow << "\n"
+        << "  rays reflection             " << c.reflection << "\n"
+        << "  rays refraction             " << c.refraction << "\n"
+        << "  rays total                  " << c.total_rays() << "\n"
+        << "  total internal reflections  " << c.total_internal_reflections << "\n"
+        << "  paths cut by depth          " << c.depth_cut << "\n"
+        << "  paths cut by contribution   " << c.contribution_cut << "\n"
+        << "  throughput                  " << std::fixed << std::setprecision(2) << mrays
+        << " Mrays/s\n";
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std::ostream& err) {
+    const RenderArgs args = parse_render_args(arg_list);
+    const auto total_start = std::chrono::steady_clock::now();
+    auto start = total_start;
+    SceneDescription d = args.scene_path ? load_scene_file(*args.scene_path) : make_default_scene();
+    const double parse_s = seconds_since(start);
+    if (!args.quiet) {
+        for (const std::string& w : d.warnings) err << "rayo: warning: " << w << "\n";
+    }
+    apply_overrides(args, d);
+    const std::string output = args.output ? *args.output : default_output_path(args);
+
+    const bool progress = !args.quiet && ProgressReporter::stderr_is_terminal();
+    const RenderResult result = render_scene(d, args.threads.value_or(0), progress);
+
+    OutputOptions options = args.output_options;
+    const CameraDesc& cam = d.scene.camera;
+    std::ostringstream camera_text;
+    camera_text << "eye " << cam.eye.x << " " << cam.eye.y << " " << cam.eye.z << ", look_at "
+                << cam.look_at.x << " " << cam.look_at.y << " " << cam.look_at.z << ", up "
+                << cam.up.x << " " << cam.up.y << " " << cam.up.z;
+    options.metadata["rayo:scene"] = d.source;
+    options.metadata["rayo:camera"] = camera_text.str();
+    options.metadata["rayo:spp"] = std::to_string(d.settings.spp);
+    options.metadata["rayo:threads"] = std::to_string(result.threads);
+    options.metadata["rayo:render_seconds"] = std::to_string(result.render_seconds);
+    start = std::chrono::steady_clock::now();
+    write_image(result.film, output, options);
+    const double write_s = seconds_since(start);
+
+    if (args.stats) print_stats_table(out, d, result, parse_s, write_s);
+    if (!args.quiet) {
+        const RayCounters& c = result.counters;
+        const double mrays =
+            result.render_seconds > 0 ? c.total_rays() / result.render_seconds / 1e6 : 0.0;
+        out << "rayo: " << output << " " << cam.width << "x" << cam.height << " " << d.settings.spp
+            << "spp " << result.threads << " threads | parse " << format_duration(parse_s)
+            << ", bvh " << format_duration(result.bvh_seconds) << ", render "
+            << format_duration(result.render_seconds) << ", write " << format_duration(write_s)
+            << " | rays " << human_count(c.total_rays()) << " (camera " << human_count(c.camera)
+            << ", shadow " << human_count(c.shadow) << ", reflect " << human_count(c.reflection)
+            << ", refract " << human_count(c.refraction) << ") " << std::fixed
+            << std::setprecision(2) << mrays << " Mrays/s | total "
+            << format_duration(seconds_since(total_start)) << "\n";
+    }
+    return 0;
+}
+
+// `rayo texture NAME [-o OUT] [--size WxH] [--scale S] [--seed N]` (seed 003 ch. 3 maps).
+int run_texture(const std::vector<std::string>& args, std::ostream& out) {
+    std::optional<std::string> name, output;
+    int width = 512, height = 512;
+    std::optional<float> scale;
+    uint32_t seed = 0;
+    ArgCursor cursor(args);
+    while (cursor.next()) {
+        const std::string& a = cursor.current();
+        if (a == "-o" || a == "--output") {
+            output = cursor.value();
+        } else if (a == "--size") {
+            const std::string& v = cursor.value();
+            const size_t x = v.find('x');
+            if (x == std::string::npos) {
+                throw UsageError(a + ": expected WxH (e.g. 512x512), got '" + v + "'");
+            }
+            width = parse_int(a + " width", v.substr(0, x), 1, kMaxImageSide);
+            height = parse_int(a + " height", v.substr(x + 1), 1, kMaxImageSide);
+        } else if (a == "--scale") {
+            scale = static_cast<float>(parse_number(a, cursor.value(), 1e-6, 1e6));
+        } else if (a == "--seed") {
+            seed = static_cast<uint32_t>(parse_int(a, cursor.value(), 0, 2147483647));
+        } else if (!a.empty() && a[0] == '-') {
+            throw UsageError("unknown option '" + a + "' (see rayo --help)");
+        } else if (!name) {
+            name = a;
+        } else {
+            throw UsageError("unexpected argument '" + a + "': one texture per command");
+        }
+    }
+    const std::vector<std::string>& names = texture_kind_names();
+    std::string known;
+    for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+    if (!name) throw UsageError("texture: expected a texture name (" + known + ")");
+    if (std::find(names.begin(), names.end(), *name) == names.end()) {
+        throw UsageError("texture: unknown texture '" + *name + "' (expected one of: " + known +
+                         ")");
+    }
+    Texture texture = make_texture(*name);
+    if (scale) texture.scale = *scale;
+    texture.seed = seed;
+    const Film film = texture_image(texture, width, height);
+    const std::string path = output ? *output : *name + ".png";
+    OutputOptions options;
+    options.metadata["rayo:texture"] = *name;
+    options.metadata["rayo:texture_scale"] = std::to_string(texture.scale);
+    options.metadata["rayo:texture_seed"] = std::to_string(seed);
+    write_image(film, path, options);
+    out << "rayo: " << path << " " << width << "x" << height << " texture " << *name << " scale "
+        << texture.scale << " seed " << seed << "\n";
+    return 0;
+}
+
+int run_info(const std::vector<std::string>& args, std::ostream& out) {
+    if (args.size() != 1) throw UsageError("info: expected exactly one scene file");
+    const SceneDescription d = load_scene_file(args[0]);
+    const Camera camera = Camera::create(d.scene.camera, d.source + "#/camera");
+    out << "scene " << d.source << "\n"
+        << "resolution " << camera.width() << "x" << camera.height() << "\n"
+        << "fov " << camera.hfov_degrees() << "x" << camera.vfov_degrees() << " degrees\n"
+        << "spheres " << d.scene.spheres.size() << "\n"
+        << "cones " << d.scene.cones.size() << "\n"
+        << "meshes " << d.scene.meshes.size() << "\n"
+        << "triangles " << d.scene.triangle_count() << "\n"
+        << "materials " << d.shading.materials.size() << "\n"
+        << "lights " << d.shading.lights.size() << "\n"
+        << "skipped_triangles " << d.skipped_triangles << "\n";
+    for (const std::string& w : d.warnings) out << "warning: " << w << "\n";
+    return 0;
+}
+
+int run_bench(const std::vector<std::string>& args, std::ostream& out) {
+    if (args.empty() || args[0] != "accuracy") {
+        throw UsageError("bench: expected 'rayo bench accuracy -o DIR [--size N]'");
+    }
+    std::optional<std::string> dir;
+    int size = kAccuracyImageSize;
+    ArgCursor cursor(args);
+    cursor.next();  // "accuracy"
+    while (cursor.next()) {
+        const std::string& a = cursor.current();
+        if (a == "-o" || a == "--output") {
+            dir = cursor.value();
+        } else if (a == "--size") {
+            size = parse_int(a, cursor.value(), 16, 4096);
+        } else {
+            throw UsageError("bench accuracy: unknown option '" + a + "'");
+        }
+    }
+    if (!dir) throw UsageError("bench accuracy: -o DIR is required");
+    run_accuracy_bench(*dir, out, size);
+    return 0;
+}
+
+}  // namespace
+
+int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    try {
+        if (args.empty()) {
+            err << kUsage;
+            return kExitUsage;
+        }
+        const std::string command = args[0];
+        args.erase(args.begin());
+        if (command == "--help" || command == "-h" || command == "help") {
+            out << kUsage;
+            return 0;
+        }
+        if (command == "--version") {
+            out << "rayo " << RAYO_VERSION << "\n";
+            return 0;
+        }
+        for (const std::string& a : args) {
+            if (a == "--help" || a == "-h") {
+                out << kUsage;
+                return 0;
+            }
+        }
+        if (command == "render") return run_render(args, out, err);
+        if (command == "info") return run_info(args, out);
+        if (command == "bench") return run_bench(args, out);
+        if (command == "texture") return run_texture(args, out);
+        throw UsageError("unknown command '" + command + "' (see rayo --help)");
+    } catch (const UsageError& e) {
+        err << "rayo: error: " << e.what() << "\n";
+        return kExitUsage;
+    } catch (const InputError& e) {
+        err << "rayo: error: " << e.what() << "\n";
+        return kExitInput;
+    } catch (const std::bad_alloc&) {
+        err << "rayo: error: out of memory\n";
+        return kExitInput;
+    } catch (const std::exception& e) {
+        err << "rayo: error: " << e.what() << "\n";
+        return kExitInput;
+    }
+}
+
+}  // namespace rayo

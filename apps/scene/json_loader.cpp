@@ -1,0 +1,871 @@
+#include "apps/scene/json_loader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <initializer_list>
+#include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "apps/scene/mesh_loader.h"
+#include "core/error.h"
+#include "shading/texture.h"
+
+namespace rayo {
+namespace {
+
+using Json = nlohmann::json;
+
+constexpr int kFormatVersion = 1;
+
+// ---- JSON syntax errors -> "file:line:column" ---------------------------------------------
+
+// nlohmann's DOM builder, remembering where parsing failed: its exceptions carry a byte offset
+// (parse_error) or none at all (out_of_range 406, a number such as 1e999 that overflows).
+class PositionRecordingSax : public nlohmann::detail::json_sax_dom_parser<Json> {
+  public:
+    explicit PositionRecordingSax(Json& root)
+        : nlohmann::detail::json_sax_dom_parser<Json>(root, /*allow_exceptions=*/false) {}
+
+    template <class Exception>
+    bool parse_error(std::size_t position, const std::string& last_token, const Exception& error) {
+        m_failed = true;
+        // `position` counts the bytes read, the failing one included (1-based index of the
+        // last byte read). For an overflowing number, point at its first digit instead. (With
+        // comments enabled, the token of a syntax error also holds the whitespace before it,
+        // so it cannot be used the same way.)
+        m_position = position;
+        if (error.id == 406 && position >= last_token.size()) {
+            m_position = position - last_token.size() + 1;
+        }
+        m_message = error.what();
+        m_overflow = error.id == 406;
+        return false;
+    }
+
+    bool failed() const { return m_failed; }
+    std::size_t position() const { return m_position; }
+    bool overflow() const { return m_overflow; }
+    const std::string& message() const { return m_message; }
+
+  private:
+    bool m_failed = false;
+    bool m_overflow = false;
+    std::size_t m_position = 0;
+    std::string m_message;
+};
+
+// Drops nlohmann's "[json.exception.parse_error.101] parse error at line 1, column 2: ".
+std::string syntax_message(const std::string& what) {
+    std::string message = what;
+    const size_t bracket = message.find("] ");
+    if (message.rfind("[json.exception.", 0) == 0 && bracket != std::string::npos) {
+        message = message.substr(bracket + 2);
+    }
+    const size_t column = message.find(", column ");
+    if (message.rfind("parse error", 0) == 0 && column != std::string::npos) {
+        const size_t colon = message.find(": ", column);
+        if (colon != std::string::npos) message = message.substr(colon + 2);
+    }
+    return message;
+}
+
+Json parse_text(const std::string& text, const std::string& source_name) {
+    Json root;
+    PositionRecordingSax sax(root);
+    const bool ok = Json::sax_parse(text, &sax, nlohmann::detail::input_format_t::json,
+                                    /*strict=*/true, /*ignore_comments=*/true);
+    if (ok && !sax.failed()) return root;
+    // 1-based line and column of the byte at the recorded (1-based) position.
+    const size_t offset = std::min(sax.position() > 0 ? sax.position() - 1 : 0, text.size());
+    size_t line = 1, line_start = 0;
+    for (size_t i = 0; i < offset; ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            line_start = i + 1;
+        }
+    }
+    const size_t column = offset - line_start + 1;
+    std::string message = syntax_message(sax.message());
+    if (sax.overflow()) message += " (expected a finite number that fits a double)";
+    throw InputError(source_name + ":" + std::to_string(line) + ":" + std::to_string(column),
+                     "invalid JSON: " + message);
+}
+
+// ---- Values -------------------------------------------------------------------------------
+
+std::string child(const std::string& pointer, const std::string& key) {
+    std::string escaped;  // RFC 6901: '~' -> "~0", '/' -> "~1"
+    for (char c : key) {
+        if (c == '~') {
+            escaped += "~0";
+        } else if (c == '/') {
+            escaped += "~1";
+        } else {
+            escaped += c;
+        }
+    }
+    return pointer + "/" + escaped;
+}
+
+std::string child(const std::string& pointer, size_t index) {
+    return pointer + "/" + std::to_string(index);
+}
+
+// A short rendering of a value for "got ..." in messages.
+std::string describe(const Json& value) {
+    std::string text = value.dump();
+    if (text.size() > 40) text = text.substr(0, 37) + "...";
+    if (value.is_string()) return "the string " + text;
+    if (value.is_object()) return "an object";
+    if (value.is_array()) return "an array of " + std::to_string(value.size());
+    return text;
+}
+
+std::string join(const std::vector<std::string>& names) {
+    std::string out;
+    for (size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + names[i];
+    return out;
+}
+
+enum class Bound { Any, NonNegative, Positive };
+
+class SceneParser {
+  public:
+    SceneParser(std::string source, std::string base_dir)
+        : m_source(std::move(source)), m_base_dir(std::move(base_dir)) {}
+
+    SceneDescription parse(const Json& root);
+
+  private:
+    [[noreturn]] void fail(const std::string& pointer, const std::string& message) const {
+        throw InputError(m_source + "#" + pointer, message);
+    }
+
+    void require_object(const Json& value, const std::string& pointer,
+                        const std::string& what) const {
+        if (!value.is_object()) fail(pointer, "expected " + what + ", got " + describe(value));
+    }
+
+    // Unknown keys are errors: they are almost always typos of a known one.
+    void check_keys(const Json& object, const std::string& pointer,
+                    std::initializer_list<const char*> allowed) const {
+        for (const auto& item : object.items()) {
+            bool known = false;
+            for (const char* key : allowed) known |= item.key() == key;
+            if (!known) {
+                std::vector<std::string> names(allowed.begin(), allowed.end());
+                fail(child(pointer, item.key()),
+                     "unknown key \"" + item.key() + "\" (expected one of: " + join(names) + ")");
+            }
+        }
+    }
+
+    const Json* find(const Json& object, const char* key) const {
+        const auto it = object.find(key);
+        return it == object.end() ? nullptr : &*it;
+    }
+
+    const Json& require(const Json& object, const std::string& pointer, const char* key,
+                        const std::string& what) const {
+        const Json* value = find(object, key);
+        if (!value)
+            fail(child(pointer, key),
+                 "missing required field \"" + std::string(key) + "\" (expected " + what + ")");
+        return *value;
+    }
+
+    float real(const Json& value, const std::string& pointer, Bound bound = Bound::Any) const {
+        const char* expected = bound == Bound::Positive      ? "a number > 0"
+                               : bound == Bound::NonNegative ? "a number >= 0"
+                                                             : "a number";
+        if (!value.is_number())
+            fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
+        const double v = value.get<double>();
+        if (!std::isfinite(v) || std::fabs(v) > kMaxSceneMagnitude) {
+            fail(pointer, std::string("expected ") + expected +
+                              " that fits a float with its square (magnitude <= 1e18), got " +
+                              describe(value));
+        }
+        if ((bound == Bound::Positive && !(v > 0.0)) ||
+            (bound == Bound::NonNegative && !(v >= 0.0))) {
+            fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
+        }
+        // A positive number that rounds to float zero (1e-50) would still be zero.
+        if (bound == Bound::Positive && !(static_cast<float>(v) > 0.0f)) {
+            fail(pointer, std::string("expected ") + expected + " that fits a float, got " +
+                              describe(value));
+        }
+        return static_cast<float>(v);
+    }
+
+    float real_or(const Json& object, const std::string& pointer, const char* key, float fallback,
+                  Bound bound = Bound::Any) const {
+        const Json* value = find(object, key);
+        return value ? real(*value, child(pointer, key), bound) : fallback;
+    }
+
+    int integer(const Json& value, const std::string& pointer, long long min, long long max) const {
+        const std::string expected =
+            "an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+        if (!value.is_number_integer())
+            fail(pointer, "expected " + expected + ", got " + describe(value));
+        // nlohmann stores non-negative integers as unsigned: compare without conversion.
+        if (value.is_number_unsigned()) {
+            const auto v = value.get<unsigned long long>();
+            if (v > static_cast<unsigned long long>(max) ||
+                (min > 0 && v < static_cast<unsigned long long>(min))) {
+                fail(pointer, "expected " + expected + ", got " + describe(value));
+            }
+            return static_cast<int>(v);
+        }
+        const long long v = value.get<long long>();
+        if (v < min || v > max) fail(pointer, "expected " + expected + ", got " + describe(value));
+        return static_cast<int>(v);
+    }
+
+    Vec3 vec3(const Json& value, const std::string& pointer) const {
+        if (!value.is_array() || value.size() != 3) {
+            fail(pointer, "expected an array of 3 numbers, got " + describe(value));
+        }
+        return Vec3(real(value[0], child(pointer, size_t(0))),
+                    real(value[1], child(pointer, size_t(1))),
+                    real(value[2], child(pointer, size_t(2))));
+    }
+
+    // Colours: [r, g, b] or one number for grey, each >= 0 (values above 1 are allowed).
+    Vec3 colour(const Json& value, const std::string& pointer) const {
+        if (value.is_number()) return Vec3(real(value, pointer, Bound::NonNegative));
+        if (!value.is_array() || value.size() != 3) {
+            fail(pointer,
+                 "expected a colour: [r, g, b] or a number (grey), got " + describe(value));
+        }
+        return Vec3(real(value[0], child(pointer, size_t(0)), Bound::NonNegative),
+                    real(value[1], child(pointer, size_t(1)), Bound::NonNegative),
+                    real(value[2], child(pointer, size_t(2)), Bound::NonNegative));
+    }
+
+    Vec3 colour_or(const Json& object, const std::string& pointer, const char* key,
+                   const Vec3& fallback) const {
+        const Json* value = find(object, key);
+        return value ? colour(*value, child(pointer, key)) : fallback;
+    }
+
+    Vec3 direction(const Json& value, const std::string& pointer) const {
+        const Vec3 v = vec3(value, pointer);
+        const float length = glm::length(v);
+        if (!(length > 0.0f) || !std::isfinite(length)) {
+            fail(pointer, "expected a non-zero direction vector, got " + describe(value));
+        }
+        return v / length;
+    }
+
+    std::string choice(const Json& value, const std::string& pointer,
+                       std::initializer_list<const char*> options) const {
+        std::vector<std::string> names;
+        for (const char* option : options) names.push_back(std::string("\"") + option + "\"");
+        const std::string expected = "one of " + join(names);
+        if (!value.is_string()) fail(pointer, "expected " + expected + ", got " + describe(value));
+        const auto text = value.get<std::string>();
+        for (const char* option : options) {
+            if (text == option) return text;
+        }
+        fail(pointer, "expected " + expected + ", got " + describe(value));
+    }
+
+    void parse_camera(const Json& value, const std::string& pointer, CameraDesc& camera) const;
+    void parse_render(const Json& value, const std::string& pointer, RenderSettings& s) const;
+    void parse_materials(const Json& value, const std::string& pointer, ShadingScene& shading);
+    void parse_textures(const Json& value, const std::string& pointer, ShadingScene& shading);
+    Texture parse_texture(const Json& value, const std::string& pointer,
+                          const std::string& name) const;
+    ColorRamp parse_ramp(const Json& value, const std::string& pointer) const;
+    void parse_fbm(const Json& value, const std::string& pointer, FbmParams& fbm) const;
+    Vec3 colour_or_texture(const Json& object, const std::string& pointer, const char* key,
+                           const Vec3& fallback, int32_t& texture) const;
+    Material parse_material(const Json& value, const std::string& pointer,
+                            const std::string& name) const;
+    Light parse_light(const Json& value, const std::string& pointer) const;
+    Attenuation parse_attenuation(const Json& value, const std::string& pointer) const;
+    void parse_object(const Json& value, const std::string& pointer, SceneDescription& out,
+                      TriangleMesh& polygons);
+    void parse_mesh(const Json& value, const std::string& pointer, SceneDescription& out);
+    glm::dmat4 parse_transform(const Json& value, const std::string& pointer) const;
+    uint32_t material_of(const Json& object, const std::string& pointer) const;
+
+    std::string m_source;
+    std::string m_base_dir;
+    std::map<std::string, uint32_t> m_material_ids;
+    std::map<std::string, int32_t> m_texture_ids;  // name -> index in ShadingScene::textures
+};
+
+SceneDescription SceneParser::parse(const Json& root) {
+    require_object(root, "", "a JSON object at the top level");
+    // The version comes first: a future version may add keys this reader does not know.
+    const Json& version = require(root, "", "rayo", "the format version 1");
+    if (!version.is_number_integer() || version.get<long long>() != kFormatVersion) {
+        fail("/rayo", "unsupported format version: expected 1, got " + describe(version));
+    }
+    check_keys(root, "",
+               {"rayo", "camera", "render", "background", "ambient_light", "textures", "materials",
+                "lights", "objects"});
+
+    SceneDescription out;
+    out.source = m_source;
+    CameraDesc& camera = out.scene.camera;
+    camera = CameraDesc{};
+    camera.width = 640;
+    camera.height = 480;
+    if (const Json* value = find(root, "camera")) {
+        parse_camera(*value, "/camera", camera);
+    }
+    if (!camera.hfov_degrees && !camera.vfov_degrees) camera.vfov_degrees = 45.0f;  // seed 002
+    Camera::create(camera, m_source + "#/camera");  // eye = look_at, up ∥ view, pixel limits
+
+    if (const Json* value = find(root, "render")) parse_render(*value, "/render", out.settings);
+    out.shading.background = colour_or(root, "", "background", Vec3(0.0f));
+    out.shading.ambient_light = colour_or(root, "", "ambient_light", Vec3(1.0f));
+
+    // Textures first: materials refer to them by name.
+    if (const Json* value = find(root, "textures")) {
+        parse_textures(*value, "/textures", out.shading);
+    }
+    parse_materials(find(root, "materials") ? *find(root, "materials") : Json::object(),
+                    "/materials", out.shading);
+
+    if (const Json* lights = find(root, "lights")) {
+        if (!lights->is_array())
+            fail("/lights", "expected an array of lights, got " + describe(*lights));
+        for (size_t i = 0; i < lights->size(); ++i) {
+            out.shading.lights.push_back(parse_light((*lights)[i], child("/lights", i)));
+        }
+    }
+
+    TriangleMesh polygons;  // every "triangle" and "polygon" object, one Embree geometry
+    polygons.name = "polygons";
+    if (const Json* objects = find(root, "objects")) {
+        if (!objects->is_array())
+            fail("/objects", "expected an array of objects, got " + describe(*objects));
+        for (size_t i = 0; i < objects->size(); ++i) {
+            parse_object((*objects)[i], child("/objects", i), out, polygons);
+        }
+    }
+    if (!polygons.triangles.empty()) out.scene.meshes.push_back(std::move(polygons));
+    return out;
+}
+
+void SceneParser::parse_camera(const Json& value, const std::string& pointer,
+                               CameraDesc& camera) const {
+    require_object(value, pointer, "a camera object");
+    check_keys(value, pointer,
+               {"eye", "look_at", "up", "distance", "hfov", "vfov", "width", "height"});
+    if (const Json* v = find(value, "eye")) camera.eye = vec3(*v, child(pointer, "eye"));
+    if (const Json* v = find(value, "look_at")) {
+        camera.look_at = vec3(*v, child(pointer, "look_at"));
+    }
+    if (const Json* v = find(value, "up")) camera.up = direction(*v, child(pointer, "up"));
+    camera.distance = real_or(value, pointer, "distance", camera.distance, Bound::Positive);
+    for (const char* key : {"hfov", "vfov"}) {
+        const Json* v = find(value, key);
+        if (!v) continue;
+        const float degrees = real(*v, child(pointer, key), Bound::Positive);
+        if (!(degrees < 180.0f)) {
+            fail(child(pointer, key),
+                 "expected a field of view in (0, 180) degrees, got " + describe(*v));
+        }
+        (std::string(key) == "hfov" ? camera.hfov_degrees : camera.vfov_degrees) = degrees;
+    }
+    if (const Json* v = find(value, "width")) {
+        camera.width = integer(*v, child(pointer, "width"), 1, kMaxImageSide);
+    }
+    if (const Json* v = find(value, "height")) {
+        camera.height = integer(*v, child(pointer, "height"), 1, kMaxImageSide);
+    }
+    if (glm::length(camera.look_at - camera.eye) == 0.0f) {
+        fail(child(pointer, "look_at"), "expected look_at to differ from eye");
+    }
+}
+
+void SceneParser::parse_render(const Json& value, const std::string& pointer,
+                               RenderSettings& s) const {
+    require_object(value, pointer, "a render settings object");
+    check_keys(value, pointer,
+               {"spp", "max_depth", "min_contribution", "tile_size", "sphere_math",
+                "sphere_method"});
+    if (const Json* v = find(value, "spp")) s.spp = integer(*v, child(pointer, "spp"), 1, 1 << 20);
+    if (const Json* v = find(value, "max_depth")) {
+        s.whitted.max_depth = integer(*v, child(pointer, "max_depth"), 0, 64);
+    }
+    s.whitted.min_contribution =
+        real_or(value, pointer, "min_contribution", s.whitted.min_contribution, Bound::NonNegative);
+    if (const Json* v = find(value, "tile_size")) {
+        s.tile_size = integer(*v, child(pointer, "tile_size"), 1, 4096);
+    }
+    if (const Json* v = find(value, "sphere_math")) {
+        s.sphere_math = *parse_sphere_math(
+            choice(*v, child(pointer, "sphere_math"), {"stable", "seed", "double"}));
+    }
+    if (const Json* v = find(value, "sphere_method")) {
+        const std::string where = child(pointer, "sphere_method");
+        if (!v->is_string()) fail(where, "expected a sphere method name, got " + describe(*v));
+        const std::optional<SphereRepresentation> method =
+            parse_sphere_method(v->get<std::string>());
+        if (!method) {
+            fail(where, "expected one of \"auto\", \"user\", \"bruteforce\", \"embree-point\", "
+                        "\"mesh:N\" (N in 0.." + std::to_string(kMaxMeshLevel) + "), got " +
+                            describe(*v));
+        }
+        s.spheres = *method;
+    }
+}
+
+// Material 0 is always "default": the scene's own when it defines one, else Material{}.
+void SceneParser::parse_materials(const Json& value, const std::string& pointer,
+                                  ShadingScene& shading) {
+    require_object(value, pointer, "an object mapping material names to materials");
+    Material fallback;
+    fallback.name = "default";
+    shading.materials.push_back(fallback);
+    m_material_ids["default"] = 0;
+    for (const auto& item : value.items()) {
+        Material material = parse_material(item.value(), child(pointer, item.key()), item.key());
+        if (item.key() == "default") {
+            shading.materials[0] = material;
+        } else {
+            m_material_ids[item.key()] = static_cast<uint32_t>(shading.materials.size());
+            shading.materials.push_back(material);
+        }
+    }
+}
+
+// A colour, or a string naming a texture of /textures (then `texture` gets its index).
+Vec3 SceneParser::colour_or_texture(const Json& object, const std::string& pointer, const char* key,
+                                    const Vec3& fallback, int32_t& texture) const {
+    const Json* value = find(object, key);
+    if (!value) return fallback;
+    if (!value->is_string()) return colour(*value, child(pointer, key));
+    const std::string name = value->get<std::string>();
+    const auto it = m_texture_ids.find(name);
+    if (it == m_texture_ids.end()) {
+        std::vector<std::string> known;
+        for (const auto& entry : m_texture_ids) known.push_back("\"" + entry.first + "\"");
+        fail(child(pointer, key),
+             "unknown texture \"" + name + "\" (expected a colour or a texture defined in " +
+                 "/textures" + (known.empty() ? ", which defines none" : ": " + join(known)) + ")");
+    }
+    texture = it->second;
+    return fallback;
+}
+
+// Textures (seed 003 ch. 3; docs/textures.md): name -> {type, scale, seed, ramp, parameters}.
+void SceneParser::parse_textures(const Json& value, const std::string& pointer,
+                                 ShadingScene& shading) {
+    require_object(value, pointer, "an object mapping texture names to textures");
+    for (const auto& item : value.items()) {
+        m_texture_ids[item.key()] = static_cast<int32_t>(shading.textures.size());
+        shading.textures.push_back(
+            parse_texture(item.value(), child(pointer, item.key()), item.key()));
+    }
+}
+
+void SceneParser::parse_fbm(const Json& value, const std::string& pointer, FbmParams& fbm) const {
+    if (const Json* v = find(value, "octaves")) {
+        fbm.octaves = integer(*v, child(pointer, "octaves"), 1, kMaxOctaves);
+    }
+    fbm.persistence = real_or(value, pointer, "persistence", fbm.persistence, Bound::Positive);
+    fbm.lacunarity = real_or(value, pointer, "lacunarity", fbm.lacunarity, Bound::Positive);
+}
+
+ColorRamp SceneParser::parse_ramp(const Json& value, const std::string& pointer) const {
+    if (!value.is_array() || value.empty()) {
+        fail(pointer, "expected a non-empty array of {\"position\": t, \"color\": c} stops, got " +
+                          describe(value));
+    }
+    std::vector<ColorStop> stops;
+    for (size_t i = 0; i < value.size(); ++i) {
+        const std::string stop_pointer = child(pointer, i);
+        require_object(value[i], stop_pointer, "a ramp stop {\"position\": t, \"color\": c}");
+        check_keys(value[i], stop_pointer, {"position", "color"});
+        ColorStop stop;
+        stop.position = real(require(value[i], stop_pointer, "position", "a number"),
+                             child(stop_pointer, "position"));
+        stop.color = colour(require(value[i], stop_pointer, "color", "a colour"),
+                            child(stop_pointer, "color"));
+        stops.push_back(stop);
+    }
+    return ColorRamp(std::move(stops));
+}
+
+Texture SceneParser::parse_texture(const Json& value, const std::string& pointer,
+                                   const std::string& name) const {
+    require_object(value, pointer, "a texture object");
+    const std::string type =
+        choice(require(value, pointer, "type", "a texture type"), child(pointer, "type"),
+               {"constant", "value", "perlin", "turbulence", "cellular", "marble", "warped",
+                "pool-bottom"});
+    Texture t = make_texture(type);
+    t.name = name;
+    if (type == "constant") {
+        check_keys(value, pointer, {"type", "color"});
+        std::get<ConstantMap>(t.map).color = colour_or(value, pointer, "color", Vec3(0.5f));
+        return t;
+    }
+    // Features below 1e-6 or above 1e6 world units would alias to noise or overflow the lattice.
+    t.scale = real_or(value, pointer, "scale", 1.0f, Bound::Positive);
+    if (!(t.scale >= 1e-6f && t.scale <= 1e6f)) {
+        fail(child(pointer, "scale"),
+             "expected a number in [1e-6, 1e6], got " + describe(*find(value, "scale")));
+    }
+    if (const Json* v = find(value, "seed")) {
+        t.seed = static_cast<uint32_t>(integer(*v, child(pointer, "seed"), 0, 2147483647));
+    }
+    if (const Json* v = find(value, "ramp")) t.ramp = parse_ramp(*v, child(pointer, "ramp"));
+    if (type == "value" || type == "perlin" || type == "turbulence") {
+        check_keys(value, pointer,
+                   {"type", "scale", "seed", "ramp", "octaves", "persistence", "lacunarity"});
+        FbmParams& fbm = type == "value"    ? std::get<ValueNoiseMap>(t.map).fbm
+                         : type == "perlin" ? std::get<PerlinMap>(t.map).fbm
+                                            : std::get<TurbulenceMap>(t.map).fbm;
+        parse_fbm(value, pointer, fbm);
+    } else if (type == "cellular") {
+        check_keys(value, pointer, {"type", "scale", "seed", "ramp", "metric", "feature"});
+        CellularMap& m = std::get<CellularMap>(t.map);
+        if (const Json* v = find(value, "metric")) {
+            const std::string metric =
+                choice(*v, child(pointer, "metric"), {"euclidean", "manhattan", "chebyshev"});
+            m.metric = metric == "manhattan"   ? DistanceMetric::Manhattan
+                       : metric == "chebyshev" ? DistanceMetric::Chebyshev
+                                               : DistanceMetric::Euclidean;
+        }
+        if (const Json* v = find(value, "feature")) {
+            const std::string f = choice(*v, child(pointer, "feature"),
+                                         {"f1", "f2", "f3", "f2-f1", "combination", "cell-id"});
+            m.feature = f == "f1"        ? CellularFeature::F1
+                        : f == "f2"      ? CellularFeature::F2
+                        : f == "f3"      ? CellularFeature::F3
+                        : f == "f2-f1"   ? CellularFeature::F2MinusF1
+                        : f == "cell-id" ? CellularFeature::CellId
+                                         : CellularFeature::Combination;
+        }
+    } else if (type == "marble") {
+        check_keys(value, pointer,
+                   {"type", "scale", "seed", "ramp", "octaves", "persistence", "lacunarity",
+                    "frequency", "distortion"});
+        MarbleMap& m = std::get<MarbleMap>(t.map);
+        parse_fbm(value, pointer, m.fbm);
+        m.frequency = real_or(value, pointer, "frequency", m.frequency);
+        m.distortion = real_or(value, pointer, "distortion", m.distortion, Bound::NonNegative);
+    } else if (type == "warped") {
+        check_keys(
+            value, pointer,
+            {"type", "scale", "seed", "ramp", "octaves", "persistence", "lacunarity", "warp"});
+        WarpedMap& m = std::get<WarpedMap>(t.map);
+        parse_fbm(value, pointer, m.fbm);
+        m.warp = real_or(value, pointer, "warp", m.warp, Bound::NonNegative);
+    } else {  // pool-bottom
+        check_keys(value, pointer, {"type", "scale", "seed", "ramp", "warp"});
+        PoolBottomMap& m = std::get<PoolBottomMap>(t.map);
+        m.warp = real_or(value, pointer, "warp", m.warp, Bound::NonNegative);
+    }
+    return t;
+}
+
+Material SceneParser::parse_material(const Json& value, const std::string& pointer,
+                                     const std::string& name) const {
+    require_object(value, pointer, "a material object");
+    check_keys(value, pointer,
+               {"ka", "kd", "ks", "shininess", "specular", "reflect", "transmit", "ior", "bump"});
+    Material m;
+    m.name = name;
+    // Each of kd, ka, ks is a colour or the name of a texture (seed 003 ch. 3).
+    m.kd = colour_or_texture(value, pointer, "kd", Vec3(0.8f), m.textures.kd);  // seed 000 [22]
+    if (find(value, "ka")) {
+        m.ka = colour_or_texture(value, pointer, "ka", Vec3(0.1f), m.textures.ka);  // seed 000 [20]
+    } else {
+        m.ka = 0.1f * m.kd;
+        if (m.textures.kd != kNoTexture) {  // the default ka = 0.1 × kd follows kd's texture
+            m.textures.ka = m.textures.kd;
+            m.textures.ka_scale = 0.1f;
+        }
+    }
+    m.ks = colour_or_texture(value, pointer, "ks", Vec3(0.0f), m.textures.ks);  // seed 000 [24]
+    if (const Json* v = find(value, "bump")) {  // seed 003's suggested extension
+        const std::string bump_pointer = child(pointer, "bump");
+        require_object(*v, bump_pointer, "a bump object {\"texture\": name, \"strength\": s}");
+        check_keys(*v, bump_pointer, {"texture", "strength"});
+        const Json& texture = require(*v, bump_pointer, "texture", "the name of a texture");
+        if (!texture.is_string()) {
+            fail(child(bump_pointer, "texture"),
+                 "expected the name of a texture, got " + describe(texture));
+        }
+        int32_t id = kNoTexture;
+        colour_or_texture(*v, bump_pointer, "texture", Vec3(0.0f), id);
+        m.textures.bump = id;
+        m.textures.bump_strength = real_or(*v, bump_pointer, "strength", 1.0f);
+    }
+    m.shininess = real_or(value, pointer, "shininess", 32.0f, Bound::NonNegative);
+    if (const Json* v = find(value, "specular")) {
+        m.specular_model = choice(*v, child(pointer, "specular"), {"phong", "blinn"}) == "blinn"
+                               ? SpecularModel::Blinn   // seed 000 eq. [28]
+                               : SpecularModel::Phong;  // seed 000 eq. [24]
+    }
+    m.reflect = colour_or(value, pointer, "reflect", Vec3(0.0f));    // seed 001 reflection
+    m.transmit = colour_or(value, pointer, "transmit", Vec3(0.0f));  // seed 001 transmission
+    m.ior = real_or(value, pointer, "ior", 1.0f, Bound::Positive);   // seed 001 Snell n21
+    return m;
+}
+
+Attenuation SceneParser::parse_attenuation(const Json& value, const std::string& pointer) const {
+    require_object(value, pointer, "an attenuation object");
+    const std::string type =
+        choice(require(value, pointer, "type", "\"none\", \"linear\" or \"quadratic\""),
+               child(pointer, "type"), {"none", "linear", "quadratic"});
+    Attenuation a;
+    if (type == "none") {
+        check_keys(value, pointer, {"type"});
+    } else if (type == "linear") {  // seed 000: f(d) = 1/(d + d0)
+        check_keys(value, pointer, {"type", "d0"});
+        a.kind = Attenuation::Kind::Linear;
+        a.d0 = real_or(value, pointer, "d0", 0.0f, Bound::NonNegative);
+    } else {  // seed 003 eq. 2.2: f(d) = min(1, 1/(a0 + a1·d + a2·d²))
+        check_keys(value, pointer, {"type", "a0", "a1", "a2"});
+        a.kind = Attenuation::Kind::Quadratic;
+        a.a0 = real_or(value, pointer, "a0", 1.0f, Bound::NonNegative);
+        a.a1 = real_or(value, pointer, "a1", 0.0f, Bound::NonNegative);
+        a.a2 = real_or(value, pointer, "a2", 0.0f, Bound::NonNegative);
+        if (!(a.a0 + a.a1 + a.a2 > 0.0f)) {
+            fail(pointer, "expected at least one of a0, a1, a2 to be > 0");
+        }
+    }
+    return a;
+}
+
+Light SceneParser::parse_light(const Json& value, const std::string& pointer) const {
+    require_object(value, pointer, "a light object");
+    const std::string type = choice(require(value, pointer, "type", "\"point\" or \"directional\""),
+                                    child(pointer, "type"), {"point", "directional"});
+    if (type == "point") {
+        check_keys(value, pointer, {"type", "position", "color", "intensity", "attenuation"});
+        PointLight light;
+        light.position =
+            vec3(require(value, pointer, "position", "[x, y, z]"), child(pointer, "position"));
+        light.color = colour_or(value, pointer, "color", Vec3(1.0f));
+        light.intensity = real_or(value, pointer, "intensity", 1.0f, Bound::NonNegative);
+        if (const Json* v = find(value, "attenuation")) {
+            light.attenuation = parse_attenuation(*v, child(pointer, "attenuation"));
+        }
+        return light;
+    }
+    check_keys(value, pointer, {"type", "direction", "color", "intensity"});
+    DirectionalLight light;
+    light.direction = direction(require(value, pointer, "direction", "[x, y, z], non-zero"),
+                                child(pointer, "direction"));
+    light.color = colour_or(value, pointer, "color", Vec3(1.0f));
+    light.intensity = real_or(value, pointer, "intensity", 1.0f, Bound::NonNegative);
+    return light;
+}
+
+uint32_t SceneParser::material_of(const Json& object, const std::string& pointer) const {
+    const Json* value = find(object, "material");
+    if (!value) return 0;  // "default"
+    const std::string where = child(pointer, "material");
+    if (!value->is_string()) fail(where, "expected a material name, got " + describe(*value));
+    const auto name = value->get<std::string>();
+    const auto it = m_material_ids.find(name);
+    if (it == m_material_ids.end()) {
+        std::vector<std::string> known;
+        for (const auto& entry : m_material_ids) known.push_back(entry.first);
+        fail(where, "unknown material \"" + name + "\" (defined: " + join(known) + ")");
+    }
+    return it->second;
+}
+
+void SceneParser::parse_object(const Json& value, const std::string& pointer, SceneDescription& out,
+                               TriangleMesh& polygons) {
+    require_object(value, pointer, "an object");
+    const std::string type =
+        choice(require(value, pointer, "type",
+                       "\"sphere\", \"cone\", \"triangle\", \"polygon\" or \"mesh\""),
+               child(pointer, "type"), {"sphere", "cone", "triangle", "polygon", "mesh"});
+    if (type == "sphere") {  // seed 000 eq. [3]
+        check_keys(value, pointer, {"type", "center", "radius", "material"});
+        Sphere sphere;
+        sphere.center =
+            vec3(require(value, pointer, "center", "[x, y, z]"), child(pointer, "center"));
+        sphere.radius = real(require(value, pointer, "radius", "a number > 0"),
+                             child(pointer, "radius"), Bound::Positive);
+        sphere.material = material_of(value, pointer);
+        out.scene.spheres.push_back(sphere);
+    } else if (type == "cone") {
+        check_keys(value, pointer,
+                   {"type", "base", "base_radius", "apex", "apex_radius", "material"});
+        Cone cone;
+        cone.base = vec3(require(value, pointer, "base", "[x, y, z]"), child(pointer, "base"));
+        cone.base_radius = real(require(value, pointer, "base_radius", "a number >= 0"),
+                                child(pointer, "base_radius"), Bound::NonNegative);
+        cone.apex = vec3(require(value, pointer, "apex", "[x, y, z]"), child(pointer, "apex"));
+        cone.apex_radius = real(require(value, pointer, "apex_radius", "a number >= 0"),
+                                child(pointer, "apex_radius"), Bound::NonNegative);
+        if (!(glm::length(cone.apex - cone.base) > 0.0f)) {
+            fail(child(pointer, "apex"), "expected apex to differ from base");
+        }
+        if (!(cone.base_radius > 0.0f || cone.apex_radius > 0.0f)) {
+            fail(child(pointer, "base_radius"), "expected base_radius or apex_radius > 0");
+        }
+        cone.material = material_of(value, pointer);
+        out.scene.cones.push_back(cone);
+    } else if (type == "triangle" || type == "polygon") {
+        check_keys(value, pointer, {"type", "vertices", "normals", "material"});
+        const std::string vertices_pointer = child(pointer, "vertices");
+        const Json& vertices = require(value, pointer, "vertices", "an array of [x, y, z]");
+        const bool triangle = type == "triangle";
+        if (!vertices.is_array() || (triangle ? vertices.size() != 3 : vertices.size() < 3)) {
+            fail(vertices_pointer, std::string("expected an array of ") +
+                                       (triangle ? "3" : "at least 3") +
+                                       " vertices [x, y, z], got " + describe(vertices));
+        }
+        std::vector<Vec3> points, normals;
+        for (size_t i = 0; i < vertices.size(); ++i) {
+            points.push_back(vec3(vertices[i], child(vertices_pointer, i)));
+        }
+        if (const Json* n = find(value, "normals")) {
+            const std::string normals_pointer = child(pointer, "normals");
+            if (!n->is_array() || n->size() != vertices.size()) {
+                fail(normals_pointer, "expected an array of " + std::to_string(vertices.size()) +
+                                          " normals (one per vertex), got " + describe(*n));
+            }
+            for (size_t i = 0; i < n->size(); ++i) {
+                normals.push_back(direction((*n)[i], child(normals_pointer, i)));
+            }
+        }
+        if (!polygons.add_convex_polygon(points, normals, material_of(value, pointer))) {
+            fail(vertices_pointer, "expected a " + type + " with non-zero area");
+        }
+    } else {
+        parse_mesh(value, pointer, out);
+    }
+}
+
+glm::dmat4 SceneParser::parse_transform(const Json& value, const std::string& pointer) const {
+    require_object(value, pointer, "a transform object");
+    check_keys(value, pointer, {"scale", "rotate", "translate"});
+    glm::dvec3 scale(1.0), rotate(0.0), translate(0.0);
+    if (const Json* v = find(value, "scale")) {
+        const std::string where = child(pointer, "scale");
+        scale = v->is_number() ? glm::dvec3(real(*v, where)) : glm::dvec3(vec3(*v, where));
+        if (scale.x == 0.0 || scale.y == 0.0 || scale.z == 0.0) {
+            fail(where, "expected a non-zero scale, got " + describe(*v));
+        }
+    }
+    if (const Json* v = find(value, "rotate")) rotate = vec3(*v, child(pointer, "rotate"));
+    if (const Json* v = find(value, "translate")) translate = vec3(*v, child(pointer, "translate"));
+    // M = T · Rz · Ry · Rx · S: scale first, then rotate about x, y, z (degrees), then move.
+    glm::dmat4 m = glm::translate(glm::dmat4(1.0), translate);
+    m = glm::rotate(m, glm::radians(rotate.z), glm::dvec3(0, 0, 1));
+    m = glm::rotate(m, glm::radians(rotate.y), glm::dvec3(0, 1, 0));
+    m = glm::rotate(m, glm::radians(rotate.x), glm::dvec3(1, 0, 0));
+    return glm::scale(m, scale);
+}
+
+std::string lower_extension(const std::string& path) {
+    const size_t dot = path.find_last_of('.');
+    const size_t slash = path.find_last_of('/');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+    std::string ext = path.substr(dot);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+void SceneParser::parse_mesh(const Json& value, const std::string& pointer, SceneDescription& out) {
+    check_keys(value, pointer, {"type", "file", "material", "transform", "smooth"});
+    const std::string file_pointer = child(pointer, "file");
+    const Json& file = require(value, pointer, "file", "a path to an .obj, .gltf or .glb file");
+    if (!file.is_string() || file.get<std::string>().empty()) {
+        fail(file_pointer, "expected a path to an .obj, .gltf or .glb file, got " + describe(file));
+    }
+    const auto relative = file.get<std::string>();
+    const std::string path =
+        relative.front() == '/' || m_base_dir.empty() ? relative : m_base_dir + "/" + relative;
+    const std::string ext = lower_extension(path);
+    if (ext != ".obj" && ext != ".gltf" && ext != ".glb") {
+        fail(file_pointer, "expected a path to an .obj, .gltf or .glb file, got " + describe(file));
+    }
+    if (!std::ifstream(path, std::ios::binary)) {
+        fail(file_pointer, "mesh file not found: '" + path + "'");
+    }
+    const bool overridden = find(value, "material") != nullptr;
+    const uint32_t override_id = material_of(value, pointer);
+    glm::dmat4 transform(1.0);
+    if (const Json* t = find(value, "transform")) {
+        transform = parse_transform(*t, child(pointer, "transform"));
+    }
+    std::optional<bool> smooth;
+    if (const Json* s = find(value, "smooth")) {
+        if (!s->is_boolean())
+            fail(child(pointer, "smooth"), "expected true or false, got " + describe(*s));
+        smooth = s->get<bool>();
+    }
+
+    // With a material override the file's materials are read (and checked) but not kept.
+    std::vector<Material> scratch = out.shading.materials;
+    std::vector<Material>& materials = overridden ? scratch : out.shading.materials;
+    const std::string where = m_source + "#" + file_pointer;
+    MeshImportStats stats;
+    TriangleMesh mesh = ext == ".obj" ? load_obj(path, materials, where, &stats)
+                                      : load_gltf(path, materials, where, &stats);
+    if (overridden) std::fill(mesh.materials.begin(), mesh.materials.end(), override_id);
+
+    transform_mesh(mesh, transform);
+    for (const Vec3& p : mesh.positions) {
+        if (!(max_abs_component(p) <= static_cast<float>(kMaxSceneMagnitude))) {
+            fail(child(pointer, "transform"),
+                 "the transformed mesh does not fit in floats (coordinates beyond 1e18)");
+        }
+    }
+    stats.degenerate_triangles += drop_degenerate_triangles(mesh);
+    if (mesh.triangles.empty()) {
+        fail(file_pointer, "mesh '" + path + "' has no non-degenerate triangles");
+    }
+    if (smooth.has_value()) {
+        if (!*smooth) {
+            mesh.normals.clear();  // flat: shade with the geometric normal
+        } else if (mesh.normals.empty()) {
+            compute_vertex_normals(mesh);
+        }
+    }
+    if (stats.degenerate_triangles > 0) {  // dropped, not refused: reported by the CLI
+        out.warnings.push_back(where + ": dropped " + std::to_string(stats.degenerate_triangles) +
+                               " degenerate (zero-area) triangle(s) of '" + path + "'");
+        out.skipped_triangles += stats.degenerate_triangles;
+    }
+    out.scene.meshes.push_back(std::move(mesh));
+}
+
+std::string parent_directory(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    if (slash == std::string::npos) return "";
+    return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+}  // namespace
+
+SceneDescription load_json_string(const std::string& text, const std::string& source_name,
+                                  const std::string& base_dir) {
+    const Json root = parse_text(text, source_name);
+    return SceneParser(source_name, base_dir).parse(root);
+}
+
+SceneDescription load_json_file(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw InputError(path, "cannot open scene file");
+    std::ostringstream text;
+    text << file.rdbuf();
+    if (file.bad()) throw InputError(path, "cannot read scene file");
+    return load_json_string(text.str(), path, parent_directory(path));
+}
+
+}  // namespace rayo

@@ -1,0 +1,735 @@
+#include "apps/scene/mesh_loader.h"
+
+#include <tiny_gltf.h>
+#include <tiny_obj_loader.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <limits>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "core/error.h"
+#include "core/scene.h"
+
+namespace rayo {
+namespace {
+
+std::string parent_directory(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
+}
+
+std::string file_name(const std::string& path) {
+    const size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// Trims trailing newlines and joins tinyobjloader/tinygltf's multi-line reports into one line.
+std::string one_line(std::string text) {
+    for (char& c : text) {
+        if (c == '\n' || c == '\r') c = ' ';
+    }
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    return text;
+}
+
+void require_readable(const std::string& path, const std::string& where) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw InputError(where, "cannot open mesh file '" + path + "'");
+}
+
+bool finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+bool within_scene_magnitude(double v) {
+    return std::isfinite(v) && std::fabs(v) <= kMaxSceneMagnitude;
+}
+
+void require_colour(const Vec3& c, const std::string& where, const std::string& what) {
+    if (!finite(c) || c.x < 0.0f || c.y < 0.0f || c.z < 0.0f) {
+        throw InputError(where, what + " must be finite and >= 0");
+    }
+}
+
+void check_mesh_not_empty(const TriangleMesh& mesh, const std::string& path,
+                          const std::string& where) {
+    if (mesh.triangles.empty()) {
+        throw InputError(where, "mesh file '" + path + "' contains no (non-degenerate) triangles");
+    }
+}
+
+// ---- OBJ / MTL ----------------------------------------------------------------------------
+
+// MTL -> Phong (docs/scene-format.md "OBJ materials"): Ka, Kd, Ks, Ns -> ka, kd, ks, shininess
+// (seed 000 eq. [24]); illum 3..7 (ray-traced reflection) -> reflect = Ks; d < 1 (or Tr > 0)
+// -> transmit = 1 − d, Ni -> ior (seed 001 transmission).
+Material material_from_mtl(const tinyobj::material_t& m, const std::string& where) {
+    Material out;
+    out.name = m.name;
+    out.ka = Vec3(m.ambient[0], m.ambient[1], m.ambient[2]);
+    out.kd = Vec3(m.diffuse[0], m.diffuse[1], m.diffuse[2]);
+    out.ks = Vec3(m.specular[0], m.specular[1], m.specular[2]);
+    const std::string what = "material '" + m.name + "': ";
+    require_colour(out.ka, where, what + "Ka");
+    require_colour(out.kd, where, what + "Kd");
+    require_colour(out.ks, where, what + "Ks");
+    if (!std::isfinite(m.shininess) || m.shininess < 0.0f) {
+        throw InputError(where, what + "Ns must be finite and >= 0");
+    }
+    out.shininess = m.shininess;
+    if (m.illum >= 3 && m.illum <= 7) out.reflect = out.ks;
+    if (!std::isfinite(m.dissolve)) throw InputError(where, what + "d/Tr must be finite");
+    const float dissolve = std::clamp(static_cast<float>(m.dissolve), 0.0f, 1.0f);
+    if (dissolve < 1.0f) out.transmit = Vec3(1.0f - dissolve);
+    if (!std::isfinite(m.ior)) throw InputError(where, what + "Ni must be finite");
+    out.ior = m.ior > 0.0f ? static_cast<float>(m.ior) : 1.0f;  // Ni <= 0: unset
+    return out;
+}
+
+// "path:line" when tinyobjloader's message names a line, else the path.
+std::string obj_place(const std::string& path, const std::string& message) {
+    static const std::regex line_pattern(R"(line:?\s*(\d+))");
+    std::smatch match;
+    if (std::regex_search(message, match, line_pattern)) return path + ":" + match[1].str();
+    return path;
+}
+
+// tinyobjloader reports out-of-range face indices only as a warning naming the file's last
+// line, so the loader finds the first offending `f` line itself (0 when there is none).
+size_t find_bad_face_line(const std::string& path) {
+    std::ifstream file(path);
+    std::string line;
+    size_t number = 0;
+    long long vertices = 0, normals = 0;
+    // An OBJ index: 1-based, or negative relative to the elements read so far.
+    auto valid = [](const std::string& text, long long count) {
+        if (text.empty()) return true;
+        char* end = nullptr;
+        long long index = std::strtoll(text.c_str(), &end, 10);
+        if (index < 0) index = count + index + 1;
+        return index >= 1 && index <= count;
+    };
+    while (std::getline(file, line)) {
+        ++number;
+        std::istringstream in(line);
+        std::string tag, token;
+        in >> tag;
+        if (tag == "v") {
+            ++vertices;
+        } else if (tag == "vn") {
+            ++normals;
+        } else if (tag == "f") {
+            while (in >> token) {
+                const size_t first = token.find('/');
+                const size_t second =
+                    first == std::string::npos ? std::string::npos : token.find('/', first + 1);
+                const std::string v = token.substr(0, first);
+                const std::string vn =
+                    second == std::string::npos ? std::string() : token.substr(second + 1);
+                if (!valid(v, vertices) || v.empty() || !valid(vn, normals)) return number;
+            }
+        }
+    }
+    return 0;
+}
+
+// tinyobjloader reads a missing coordinate as 0 and "inf" or "1e39" as whatever its parser
+// makes of them, and drops faces of fewer than 3 vertices without a word; so the loader checks
+// the statements it uses first, each error naming "path:line" (issue 5, the bad-input catalogue).
+void check_obj_text(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::string line;
+    size_t number = 0;
+    auto fail = [&](const std::string& message) {
+        throw InputError(path + ":" + std::to_string(number), message);
+    };
+    auto check_number = [&](const std::string& tag, const std::string& token) {
+        const bool number_chars = token.find_first_not_of("0123456789+-.eE") == std::string::npos;
+        char* end = nullptr;
+        const double value = number_chars ? std::strtod(token.c_str(), &end) : 0.0;
+        if (!number_chars || token.empty() || end != token.c_str() + token.size() ||
+            !std::isfinite(value) || std::fabs(value) > kMaxSceneMagnitude) {
+            fail("'" + tag + "': expected a finite number (in float range) of magnitude <= 1e18, "
+                 "got '" + token + "'");
+        }
+    };
+    while (std::getline(file, line)) {
+        ++number;
+        for (const char c : line) {
+            const auto byte = static_cast<unsigned char>(c);
+            if (byte < 0x20 && c != '\t' && c != '\r' && c != '\f' && c != '\v') {
+                char hex[8];
+                std::snprintf(hex, sizeof hex, "0x%02X", byte);
+                fail(std::string("binary data (control byte ") + hex + "): not an OBJ text file");
+            }
+        }
+        std::istringstream in(line);
+        std::string tag, token;
+        in >> tag;
+        std::vector<std::string> tokens;
+        while (in >> token) tokens.push_back(token);
+        if (tag == "v") {
+            if (tokens.size() != 3 && tokens.size() != 4 && tokens.size() != 6) {
+                fail("'v' expects 3 numbers (x y z; optionally w, or r g b), got " +
+                     std::to_string(tokens.size()));
+            }
+            for (const std::string& t : tokens) check_number(tag, t);
+        } else if (tag == "vn") {
+            if (tokens.size() != 3) {
+                fail("'vn' expects 3 numbers (x y z), got " + std::to_string(tokens.size()));
+            }
+            for (const std::string& t : tokens) check_number(tag, t);
+        } else if (tag == "f" && tokens.size() < 3) {
+            fail("a face needs at least 3 vertices, got " + std::to_string(tokens.size()));
+        }
+    }
+}
+
+}  // namespace
+
+uint32_t default_material_index(std::vector<Material>& materials) {
+    for (size_t i = 0; i < materials.size(); ++i) {
+        if (materials[i].name == "default") return static_cast<uint32_t>(i);
+    }
+    Material fallback;
+    fallback.name = "default";
+    materials.push_back(fallback);
+    return static_cast<uint32_t>(materials.size() - 1);
+}
+
+TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
+                      const std::string& where, MeshImportStats* stats) {
+    require_readable(path, where);
+    check_obj_text(path);
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> file_materials;
+    std::string warn, err;
+    const std::string mtl_dir = parent_directory(path) + "/";
+    const bool ok = tinyobj::LoadObj(&attrib, &shapes, &file_materials, &warn, &err, path.c_str(),
+                                     mtl_dir.c_str(), /*triangulate=*/true);
+    if (!ok || !err.empty()) {
+        const std::string message = one_line(err.empty() ? warn : err);
+        throw InputError(obj_place(path, message),
+                         "malformed OBJ: " + (message.empty() ? "cannot parse" : message));
+    }
+    // A missing material library or an unknown `usemtl` name is only a warning for
+    // tinyobjloader; for a renderer it silently changes the picture, so it is an error here.
+    if (warn.find("not found") != std::string::npos ||
+        warn.find("Failed to load material") != std::string::npos) {
+        const std::string message = one_line(warn);
+        throw InputError(obj_place(path, message), "OBJ materials: " + message);
+    }
+
+    std::vector<Material> converted;
+    for (const auto& m : file_materials) converted.push_back(material_from_mtl(m, path));
+
+    TriangleMesh mesh;
+    mesh.name = file_name(path);
+    const size_t vertex_count = attrib.vertices.size() / 3;
+    const size_t normal_count = attrib.normals.size() / 3;
+    for (size_t i = 0; i < vertex_count; ++i) {
+        const Vec3 p(attrib.vertices[3 * i], attrib.vertices[3 * i + 1],
+                     attrib.vertices[3 * i + 2]);
+        if (!finite(p)) {
+            throw InputError(path, "vertex " + std::to_string(i + 1) + " is not finite");
+        }
+    }
+
+    bool any_normal = false;
+    for (const auto& shape : shapes) {
+        for (const auto& index : shape.mesh.indices) any_normal |= index.normal_index >= 0;
+    }
+
+    const auto first_material = static_cast<uint32_t>(materials.size());
+    bool needs_default = false;
+    constexpr uint32_t kNoMaterial = std::numeric_limits<uint32_t>::max();
+    // One rayo vertex per distinct (position, normal) pair: OBJ indexes them separately.
+    std::map<std::pair<int, int>, uint32_t> vertex_ids;
+    for (const auto& shape : shapes) {
+        const auto& indices = shape.mesh.indices;
+        for (size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
+            if (shape.mesh.num_face_vertices[face] != 3) {
+                throw InputError(path, "face " + std::to_string(face + 1) + " of shape '" +
+                                           shape.name + "' is not a triangle after triangulation");
+            }
+            std::array<uint32_t, 3> triangle{};
+            for (size_t k = 0; k < 3; ++k) {
+                const tinyobj::index_t& index = indices[3 * face + k];
+                if (index.vertex_index < 0 ||
+                    static_cast<size_t>(index.vertex_index) >= vertex_count ||
+                    index.normal_index >= static_cast<int>(normal_count)) {
+                    const size_t line = find_bad_face_line(path);
+                    throw InputError(line ? path + ":" + std::to_string(line) : path,
+                                     "face index out of bounds (the file has " +
+                                         std::to_string(vertex_count) + " vertices and " +
+                                         std::to_string(normal_count) + " normals)");
+                }
+                const int normal_index = any_normal ? index.normal_index : -1;
+                const auto key = std::make_pair(index.vertex_index, normal_index);
+                auto found = vertex_ids.find(key);
+                if (found == vertex_ids.end()) {
+                    const auto v = static_cast<size_t>(index.vertex_index);
+                    mesh.positions.emplace_back(attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
+                                                attrib.vertices[3 * v + 2]);
+                    if (any_normal) {
+                        Vec3 n(0.0f);  // zero: this corner has no normal, shade with Ng
+                        if (normal_index >= 0) {
+                            const auto ni = static_cast<size_t>(normal_index);
+                            n = Vec3(attrib.normals[3 * ni], attrib.normals[3 * ni + 1],
+                                     attrib.normals[3 * ni + 2]);
+                            const float length = glm::length(n);
+                            n = (std::isfinite(length) && length > 0.0f) ? n / length : Vec3(0.0f);
+                        }
+                        mesh.normals.push_back(n);
+                    }
+                    found =
+                        vertex_ids.emplace(key, static_cast<uint32_t>(mesh.positions.size() - 1))
+                            .first;
+                }
+                triangle[k] = found->second;
+            }
+            const int material =
+                face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
+            const bool named = material >= 0 && static_cast<size_t>(material) < converted.size();
+            needs_default |= !named;
+            mesh.triangles.push_back(triangle);
+            // Faces without a material are patched once the default material's index is known.
+            mesh.materials.push_back(named ? first_material + static_cast<uint32_t>(material)
+                                           : kNoMaterial);
+        }
+    }
+
+    materials.insert(materials.end(), converted.begin(), converted.end());
+    if (needs_default) {
+        const uint32_t default_id = default_material_index(materials);
+        for (auto& id : mesh.materials) {
+            if (id == kNoMaterial) id = default_id;
+        }
+    }
+    const size_t dropped = drop_degenerate_triangles(mesh);
+    if (stats) {
+        stats->degenerate_triangles = dropped;
+        stats->file_materials = converted.size();
+    }
+    check_mesh_not_empty(mesh, path, where);
+    return mesh;
+}
+
+// ---- glTF ---------------------------------------------------------------------------------
+
+namespace {
+
+// glTF metallicRoughness -> Phong (docs/scene-format.md "glTF materials").
+Material material_from_gltf(const tinygltf::Material& m, size_t index, const std::string& where) {
+    Material out;
+    out.name = m.name.empty() ? "gltf material " + std::to_string(index) : m.name;
+    const auto& pbr = m.pbrMetallicRoughness;
+    const std::string what = "material '" + out.name + "': ";
+    if (pbr.baseColorFactor.size() < 3) throw InputError(where, what + "baseColorFactor");
+    for (size_t i = 0; i < 3; ++i) {
+        if (!within_scene_magnitude(pbr.baseColorFactor[i]) || pbr.baseColorFactor[i] < 0.0) {
+            throw InputError(where, what + "baseColorFactor must be finite and >= 0");
+        }
+    }
+    if (!std::isfinite(pbr.metallicFactor) || pbr.metallicFactor < 0.0 ||
+        pbr.metallicFactor > 1.0 || !std::isfinite(pbr.roughnessFactor) ||
+        pbr.roughnessFactor < 0.0 || pbr.roughnessFactor > 1.0) {
+        throw InputError(where, what + "metallicFactor and roughnessFactor must be in [0, 1]");
+    }
+    const Vec3 base(static_cast<float>(pbr.baseColorFactor[0]),
+                    static_cast<float>(pbr.baseColorFactor[1]),
+                    static_cast<float>(pbr.baseColorFactor[2]));
+    const auto metallic = static_cast<float>(pbr.metallicFactor);
+    const double roughness = pbr.roughnessFactor;
+    out.kd = base;
+    out.ka = 0.1f * base;
+    out.ks = Vec3(0.04f + metallic);  // dielectric F0 ≈ 0.04, metals reflect more
+    out.reflect = metallic * base;
+    // Blinn-Phong exponent matching a GGX/Beckmann roughness α = r²: n = 2/α² − 2.
+    const double r4 = roughness * roughness * roughness * roughness;
+    const double exponent = r4 > 0.0 ? 2.0 / r4 - 2.0 : 10000.0;
+    out.shininess = static_cast<float>(std::clamp(exponent, 1.0, 10000.0));
+    return out;
+}
+
+// Bytes of one accessor element, checked against its buffer view and buffer.
+struct AccessorView {
+    const unsigned char* data = nullptr;
+    size_t count = 0;
+    size_t stride = 0;
+};
+
+AccessorView view_accessor(const tinygltf::Model& model, int accessor_index, int component_type,
+                           int type, const std::string& path, const std::string& what) {
+    if (accessor_index < 0 || static_cast<size_t>(accessor_index) >= model.accessors.size()) {
+        throw InputError(path,
+                         what + ": accessor " + std::to_string(accessor_index) + " does not exist");
+    }
+    const tinygltf::Accessor& accessor = model.accessors[static_cast<size_t>(accessor_index)];
+    if (accessor.sparse.isSparse) {
+        throw InputError(path, what + ": sparse accessors are not supported");
+    }
+    if (component_type >= 0 && accessor.componentType != component_type) {
+        throw InputError(
+            path, what + ": unsupported component type " + std::to_string(accessor.componentType));
+    }
+    if (accessor.type != type) {
+        throw InputError(path,
+                         what + ": unexpected accessor type " + std::to_string(accessor.type));
+    }
+    if (accessor.bufferView < 0 ||
+        static_cast<size_t>(accessor.bufferView) >= model.bufferViews.size()) {
+        throw InputError(path, what + ": accessor without a valid bufferView");
+    }
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(accessor.bufferView)];
+    if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size()) {
+        throw InputError(path, what + ": bufferView without a valid buffer");
+    }
+    const tinygltf::Buffer& buffer = model.buffers[static_cast<size_t>(view.buffer)];
+    const int component_size =
+        tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(accessor.componentType));
+    const int components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(accessor.type));
+    if (component_size <= 0 || components <= 0) {
+        throw InputError(path, what + ": invalid accessor component type or type");
+    }
+    const size_t element_size = static_cast<size_t>(component_size) * components;
+    const size_t stride = view.byteStride > 0 ? view.byteStride : element_size;
+    if (view.byteOffset > buffer.data.size() ||
+        view.byteLength > buffer.data.size() - view.byteOffset) {
+        throw InputError(path, what + ": bufferView exceeds its buffer");
+    }
+    if (accessor.count > 0 &&
+        (accessor.byteOffset > view.byteLength ||
+         (accessor.count - 1) > (view.byteLength - accessor.byteOffset) / stride ||
+         accessor.byteOffset + (accessor.count - 1) * stride + element_size > view.byteLength)) {
+        throw InputError(path, what + ": accessor exceeds its bufferView");
+    }
+    AccessorView out;
+    out.data = buffer.data.data() + view.byteOffset + accessor.byteOffset;
+    out.count = accessor.count;
+    out.stride = stride;
+    return out;
+}
+
+std::vector<Vec3> read_vec3(const tinygltf::Model& model, int accessor, const std::string& path,
+                            const std::string& what) {
+    const AccessorView view = view_accessor(model, accessor, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                            TINYGLTF_TYPE_VEC3, path, what);
+    std::vector<Vec3> out(view.count);
+    for (size_t i = 0; i < view.count; ++i) {
+        float v[3];
+        std::memcpy(v, view.data + i * view.stride, sizeof v);
+        out[i] = Vec3(v[0], v[1], v[2]);
+        if (!finite(out[i])) {
+            throw InputError(path, what + ": element " + std::to_string(i) + " is not finite");
+        }
+    }
+    return out;
+}
+
+std::vector<uint32_t> read_indices(const tinygltf::Model& model, int accessor,
+                                   const std::string& path, const std::string& what) {
+    const AccessorView view = view_accessor(model, accessor, -1, TINYGLTF_TYPE_SCALAR, path, what);
+    const int type = model.accessors[static_cast<size_t>(accessor)].componentType;
+    std::vector<uint32_t> out(view.count);
+    for (size_t i = 0; i < view.count; ++i) {
+        const unsigned char* p = view.data + i * view.stride;
+        switch (type) {
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                out[i] = *p;
+                break;
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                uint16_t v;
+                std::memcpy(&v, p, sizeof v);
+                out[i] = v;
+                break;
+            }
+            case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+                uint32_t v;
+                std::memcpy(&v, p, sizeof v);
+                out[i] = v;
+                break;
+            }
+            default:
+                throw InputError(path, what +
+                                           ": indices must be unsigned byte/short/int, got "
+                                           "component type " +
+                                           std::to_string(type));
+        }
+    }
+    return out;
+}
+
+glm::dmat4 node_local_transform(const tinygltf::Node& node) {
+    if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major
+    glm::dmat4 t(1.0), r(1.0), s(1.0);
+    if (node.translation.size() == 3) {
+        t[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+    }
+    if (node.rotation.size() == 4) {  // glTF quaternions are (x, y, z, w)
+        r = glm::mat4_cast(
+            glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
+    }
+    if (node.scale.size() == 3) {
+        s = glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    }
+    return t * r * s;  // glTF: M = T * R * S
+}
+
+struct GltfBuilder {
+    GltfBuilder(const tinygltf::Model& m, const std::string& p, std::vector<Material>& mats)
+        : model(m), path(p), materials(mats), first_material(static_cast<uint32_t>(mats.size())) {}
+
+    const tinygltf::Model& model;
+    const std::string& path;
+    std::vector<Material>& materials;
+    uint32_t first_material;
+    TriangleMesh mesh;
+    bool any_normals = false;
+
+    void append_primitive(const tinygltf::Primitive& primitive, const glm::dmat4& world,
+                          const std::string& what) {
+        const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+        if (mode != TINYGLTF_MODE_TRIANGLES) {
+            throw InputError(path, what + ": unsupported primitive mode " + std::to_string(mode) +
+                                       " (only TRIANGLES, mode 4, is supported)");
+        }
+        const auto position = primitive.attributes.find("POSITION");
+        if (position == primitive.attributes.end()) {
+            throw InputError(path, what + ": primitive without POSITION");
+        }
+        TriangleMesh piece;
+        piece.positions = read_vec3(model, position->second, path, what + " POSITION");
+        const auto normal = primitive.attributes.find("NORMAL");
+        if (normal != primitive.attributes.end()) {
+            piece.normals = read_vec3(model, normal->second, path, what + " NORMAL");
+            if (piece.normals.size() != piece.positions.size()) {
+                throw InputError(path, what + ": NORMAL and POSITION counts differ");
+            }
+            for (auto& n : piece.normals) {
+                const float length = glm::length(n);
+                n = length > 0.0f ? n / length : Vec3(0.0f);
+            }
+        }
+        std::vector<uint32_t> indices;
+        if (primitive.indices >= 0) {
+            indices = read_indices(model, primitive.indices, path, what + " indices");
+        } else {
+            indices.resize(piece.positions.size());
+            for (size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<uint32_t>(i);
+        }
+        if (indices.size() % 3 != 0) {
+            throw InputError(path, what + ": index count " + std::to_string(indices.size()) +
+                                       " is not a multiple of 3");
+        }
+        uint32_t material;
+        if (primitive.material >= 0 &&
+            static_cast<size_t>(primitive.material) < model.materials.size()) {
+            material = first_material + static_cast<uint32_t>(primitive.material);
+        } else if (primitive.material < 0) {
+            material = default_material_index(materials);
+        } else {
+            throw InputError(path, what + ": material " + std::to_string(primitive.material) +
+                                       " does not exist");
+        }
+        for (size_t i = 0; i < indices.size(); i += 3) {
+            for (size_t k = 0; k < 3; ++k) {
+                if (indices[i + k] >= piece.positions.size()) {
+                    throw InputError(
+                        path, what + ": index " + std::to_string(indices[i + k]) + " out of range");
+                }
+            }
+            piece.triangles.push_back({indices[i], indices[i + 1], indices[i + 2]});
+            piece.materials.push_back(material);
+        }
+        transform_mesh(piece, world);
+        append(piece);
+    }
+
+    void append(const TriangleMesh& piece) {
+        const auto offset = static_cast<uint32_t>(mesh.positions.size());
+        const bool piece_normals = !piece.normals.empty();
+        if (piece_normals && !any_normals) {
+            mesh.normals.assign(mesh.positions.size(), Vec3(0.0f));  // zero: shade with Ng
+            any_normals = true;
+        }
+        mesh.positions.insert(mesh.positions.end(), piece.positions.begin(), piece.positions.end());
+        if (any_normals) {
+            if (piece_normals) {
+                mesh.normals.insert(mesh.normals.end(), piece.normals.begin(), piece.normals.end());
+            } else {
+                mesh.normals.resize(mesh.positions.size(), Vec3(0.0f));
+            }
+        }
+        for (const auto& t : piece.triangles) {
+            mesh.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+        }
+        mesh.materials.insert(mesh.materials.end(), piece.materials.begin(), piece.materials.end());
+    }
+
+    void visit(int node_index, const glm::dmat4& parent, std::set<int>& on_path) {
+        if (node_index < 0 || static_cast<size_t>(node_index) >= model.nodes.size()) {
+            throw InputError(path, "node " + std::to_string(node_index) + " does not exist");
+        }
+        if (!on_path.insert(node_index).second) {
+            throw InputError(path, "node " + std::to_string(node_index) + " is its own ancestor");
+        }
+        const tinygltf::Node& node = model.nodes[static_cast<size_t>(node_index)];
+        const glm::dmat4 world = parent * node_local_transform(node);
+        if (node.mesh >= 0) {
+            if (static_cast<size_t>(node.mesh) >= model.meshes.size()) {
+                throw InputError(path, "node " + std::to_string(node_index) + ": mesh " +
+                                           std::to_string(node.mesh) + " does not exist");
+            }
+            const tinygltf::Mesh& gltf_mesh = model.meshes[static_cast<size_t>(node.mesh)];
+            for (size_t p = 0; p < gltf_mesh.primitives.size(); ++p) {
+                append_primitive(
+                    gltf_mesh.primitives[p], world,
+                    "mesh " + std::to_string(node.mesh) + " primitive " + std::to_string(p));
+            }
+        }
+        for (int child : node.children) visit(child, world, on_path);
+        on_path.erase(node_index);
+    }
+};
+
+// Image data is not used by rayo: skip decoding (and do not fail on missing textures).
+bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                  const unsigned char*, int, void*) {
+    return true;
+}
+
+}  // namespace
+
+TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials,
+                       const std::string& where, MeshImportStats* stats) {
+    require_readable(path, where);
+    char magic[4] = {0, 0, 0, 0};
+    {
+        std::ifstream file(path, std::ios::binary);
+        file.read(magic, 4);
+    }
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(ignore_image, nullptr);
+    tinygltf::Model model;
+    std::string err, warn;
+    const bool binary = std::memcmp(magic, "glTF", 4) == 0;
+    const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                           : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    if (!ok) {
+        throw InputError(path, std::string("malformed glTF") + (binary ? " binary" : "") + ": " +
+                                   one_line(err.empty() ? "cannot parse" : err));
+    }
+
+    std::vector<Material> converted;
+    for (size_t i = 0; i < model.materials.size(); ++i) {
+        converted.push_back(material_from_gltf(model.materials[i], i, path));
+    }
+    GltfBuilder builder(model, path, materials);
+    materials.insert(materials.end(), converted.begin(), converted.end());
+    builder.mesh.name = file_name(path);
+
+    std::vector<int> roots;
+    if (!model.scenes.empty()) {
+        const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
+        if (static_cast<size_t>(scene) >= model.scenes.size()) {
+            throw InputError(path, "default scene " + std::to_string(scene) + " does not exist");
+        }
+        roots = model.scenes[static_cast<size_t>(scene)].nodes;
+    } else {
+        // No scene: every node that is no other node's child is a root.
+        std::vector<bool> is_child(model.nodes.size(), false);
+        for (const auto& node : model.nodes) {
+            for (int child : node.children) {
+                if (child >= 0 && static_cast<size_t>(child) < is_child.size()) {
+                    is_child[static_cast<size_t>(child)] = true;
+                }
+            }
+        }
+        for (size_t i = 0; i < model.nodes.size(); ++i) {
+            if (!is_child[i]) roots.push_back(static_cast<int>(i));
+        }
+    }
+    std::set<int> on_path;
+    for (int root : roots) builder.visit(root, glm::dmat4(1.0), on_path);
+
+    TriangleMesh mesh = std::move(builder.mesh);
+    const size_t dropped = drop_degenerate_triangles(mesh);
+    if (stats) {
+        stats->degenerate_triangles = dropped;
+        stats->file_materials = converted.size();
+    }
+    check_mesh_not_empty(mesh, path, where);
+    return mesh;
+}
+
+// ---- Shared helpers -----------------------------------------------------------------------
+
+void transform_mesh(TriangleMesh& mesh, const glm::dmat4& transform) {
+    for (auto& p : mesh.positions) {
+        p = Vec3(transform * glm::dvec4(glm::dvec3(p), 1.0));
+    }
+    // Normals transform by the inverse transpose of the linear part.
+    const glm::dmat3 linear(transform);
+    const glm::dmat3 normal_matrix = glm::inverseTranspose(linear);
+    for (auto& n : mesh.normals) {
+        const glm::dvec3 m = normal_matrix * glm::dvec3(n);
+        const double length = glm::length(m);
+        n = (std::isfinite(length) && length > 0.0) ? Vec3(m / length) : Vec3(0.0f);
+    }
+    if (glm::determinant(linear) < 0.0) {
+        for (auto& t : mesh.triangles) std::swap(t[1], t[2]);  // a mirror reverses the winding
+    }
+}
+
+void compute_vertex_normals(TriangleMesh& mesh) {
+    std::vector<glm::dvec3> sums(mesh.positions.size(), glm::dvec3(0.0));
+    for (const auto& t : mesh.triangles) {
+        const glm::dvec3 a(mesh.positions[t[0]]), b(mesh.positions[t[1]]), c(mesh.positions[t[2]]);
+        const glm::dvec3 area_normal = glm::cross(b - a, c - a);  // length = 2 × area
+        for (uint32_t v : t) sums[v] += area_normal;
+    }
+    mesh.normals.assign(mesh.positions.size(), Vec3(0.0f));
+    for (size_t i = 0; i < sums.size(); ++i) {
+        const double length = glm::length(sums[i]);
+        if (length > 0.0) mesh.normals[i] = Vec3(sums[i] / length);
+    }
+}
+
+size_t drop_degenerate_triangles(TriangleMesh& mesh) {
+    size_t kept = 0;
+    const bool per_triangle_materials = mesh.materials.size() == mesh.triangles.size();
+    for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const auto& t = mesh.triangles[i];
+        const Vec3& a = mesh.positions[t[0]];
+        const Vec3& b = mesh.positions[t[1]];
+        const Vec3& c = mesh.positions[t[2]];
+        const float area2 = glm::length(glm::cross(b - a, c - a));
+        if (!(std::isfinite(area2) && area2 > 0.0f)) continue;
+        mesh.triangles[kept] = t;
+        if (per_triangle_materials) mesh.materials[kept] = mesh.materials[i];
+        ++kept;
+    }
+    const size_t dropped = mesh.triangles.size() - kept;
+    mesh.triangles.resize(kept);
+    if (per_triangle_materials) mesh.materials.resize(kept);
+    return dropped;
+}
+
+}  // namespace rayo

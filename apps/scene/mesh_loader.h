@@ -1,0 +1,51 @@
+#pragma once
+// Triangle-mesh import: Wavefront OBJ/MTL (tinyobjloader) and glTF 2.0 .gltf/.glb (tinygltf),
+// with the files' materials mapped onto rayo's Phong model (docs/scene-format.md, "Meshes"),
+// plus the mesh helpers the scene loaders share (transforms, vertex normals, degenerate faces).
+#include <cstddef>
+#include <glm/mat4x4.hpp>
+#include <string>
+#include <vector>
+
+#include "core/shapes/mesh.h"
+#include "shading/material.h"
+
+namespace rayo {
+
+// What an import did besides building the mesh.
+struct MeshImportStats {
+    size_t degenerate_triangles = 0;  // zero-area triangles dropped (not an error)
+    size_t file_materials = 0;        // materials appended from the file
+};
+
+// Both loaders append the file's materials to `materials` and give every triangle the index
+// of its material there. Faces the file assigns no material get the material named "default"
+// in `materials` (appended, a default-constructed Material, if there is none). The file's
+// normals are kept (unit length; zero where a corner has none, meaning "shade with the
+// geometric normal"); a file without normals gives an empty `normals` (flat shading).
+// Errors are InputError: a missing or unreadable file names `where` (the caller's place, e.g.
+// "scene.json#/objects/2/file") and the resolved path; a malformed OBJ names "path:line" when
+// tinyobjloader reports a line; a file without triangles is an error.
+TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
+                      const std::string& where, MeshImportStats* stats = nullptr);
+
+// glTF 2.0: POSITION, NORMAL and indices (u8/u16/u32) of the TRIANGLES primitives of every mesh
+// instanced by the default scene's nodes (node matrices and TRS applied). .glb and .gltf (base64
+// or external buffers). Other primitive modes and sparse accessors are rejected.
+TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials,
+                       const std::string& where, MeshImportStats* stats = nullptr);
+
+// Applies an affine transform to positions and (by the inverse transpose) normals; a transform
+// that mirrors (negative determinant) also flips the winding so faces keep their orientation.
+void transform_mesh(TriangleMesh& mesh, const glm::dmat4& transform);
+
+// Replaces the normals by area-weighted averages of the adjacent faces' normals.
+void compute_vertex_normals(TriangleMesh& mesh);
+
+// Removes triangles of zero area (or with non-finite vertices); returns how many it removed.
+size_t drop_degenerate_triangles(TriangleMesh& mesh);
+
+// Index in `materials` of the material named "default", appending one when there is none.
+uint32_t default_material_index(std::vector<Material>& materials);
+
+}  // namespace rayo

@@ -1,0 +1,105 @@
+#include "apps/scene/renderer.h"
+
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+
+#include <chrono>
+#include <memory>
+
+#include "core/accel.h"
+#include "core/camera.h"
+#include "core/error.h"
+#include "core/render.h"
+#include "shading/whitted.h"
+
+namespace rayo {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Loaders validate as they read; this guards scenes built in code (and any loader slip) against
+// material and texture ids that would index past their tables.
+void check_material_ids(const SceneDescription& d) {
+    const size_t count = d.shading.materials.size();
+    auto check = [&](uint32_t id, const std::string& what) {
+        if (id >= count) {
+            throw InputError(d.source, what + " uses material " + std::to_string(id) + " but only " +
+                                           std::to_string(count) + " are defined");
+        }
+    };
+    for (size_t i = 0; i < d.scene.spheres.size(); ++i) {
+        check(d.scene.spheres[i].material, "sphere " + std::to_string(i));
+    }
+    for (size_t i = 0; i < d.scene.cones.size(); ++i) {
+        check(d.scene.cones[i].material, "cone " + std::to_string(i));
+    }
+    for (size_t m = 0; m < d.scene.meshes.size(); ++m) {
+        const TriangleMesh& mesh = d.scene.meshes[m];
+        if (mesh.materials.size() != mesh.triangles.size()) {
+            throw InputError(d.source, "mesh " + std::to_string(m) + " has " +
+                                           std::to_string(mesh.triangles.size()) +
+                                           " triangles but " +
+                                           std::to_string(mesh.materials.size()) + " material ids");
+        }
+        for (uint32_t id : mesh.materials) check(id, "mesh " + std::to_string(m));
+    }
+    const auto texture_count = static_cast<int32_t>(d.shading.textures.size());
+    for (const Material& material : d.shading.materials) {
+        const MaterialTextures& t = material.textures;
+        for (int32_t id : {t.ka, t.kd, t.ks, t.bump}) {
+            if (id != kNoTexture && (id < 0 || id >= texture_count)) {
+                throw InputError(d.source, "material '" + material.name + "' uses texture " +
+                                               std::to_string(id) + " but only " +
+                                               std::to_string(texture_count) + " are defined");
+            }
+        }
+    }
+}
+
+}  // namespace
+
+int default_thread_count() { return tbb::info::default_concurrency(); }
+
+RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress) {
+    const Camera camera = Camera::create(description.scene.camera, description.source + "#/camera");
+    check_material_ids(description);
+    RenderResult result;
+    result.threads = threads > 0 ? threads : default_thread_count();
+    // Limits TBB and Embree's BVH build alike (DESIGN.md: no task_scheduler_init in oneTBB).
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                              static_cast<size_t>(result.threads));
+
+    auto start = std::chrono::steady_clock::now();
+    result.spheres = choose_sphere_method(description, camera);
+    AccelOptions accel_options;
+    accel_options.spheres = result.spheres.spheres;
+    accel_options.sphere_math = result.spheres.math;
+    const Accel accel(description.scene, accel_options);
+    result.bvh_seconds = seconds_since(start);
+    result.primitives = accel.primitive_count();
+
+    const WhittedIntegrator integrator(accel, description.shading, description.settings.whitted);
+    result.film = Film(camera.width(), camera.height());
+    TileSettings tiles;
+    tiles.spp = description.settings.spp;
+    tiles.tile_size = description.settings.tile_size;
+    // Embree's built-in sphere kernel rounds differently in its packet and single-ray forms
+    // (5% of balls_3's pixels change, docs/performance.md), so embree-point stays on single rays
+    // to keep the promise that the coherent path changes no bits.
+    tiles.coherent = description.settings.coherent &&
+                     result.spheres.spheres.method != SphereMethod::EmbreePoint;
+    result.coherent = tiles.coherent;
+
+    start = std::chrono::steady_clock::now();
+    {
+        ProgressReporter progress(static_cast<uint64_t>(camera.width()) * camera.height(),
+                                  "rendering", show_progress);
+        result.counters = render_tiles(camera, integrator, tiles, result.film, &progress);
+    }
+    result.render_seconds = seconds_since(start);
+    return result;
+}
+
+}  // namespace rayo

@@ -1,0 +1,28 @@
+#pragma once
+// One render of a scene description, end to end in memory: camera validation, the Embree BVH,
+// the Whitted integrator in the TBB tile loop. Returns the film, ray counts and phase times.
+#include "apps/scene/scene_description.h"
+#include "apps/scene/sphere_method_choice.h"
+#include "core/film.h"
+#include "core/stats.h"
+
+namespace rayo {
+
+struct RenderResult {
+    Film film{1, 1};
+    RayCounters counters;
+    double bvh_seconds = 0.0;
+    double render_seconds = 0.0;
+    size_t primitives = 0;
+    int threads = 0;
+    SphereChoice spheres;  // the sphere method and math that ran, and why
+    bool coherent = false;  // camera/shadow rays traced as per-tile Embree streams
+};
+
+// threads = 0: all cores. Throws InputError for an invalid camera.
+RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress);
+
+// The thread count TBB uses when none is given.
+int default_thread_count();
+
+}  // namespace rayo

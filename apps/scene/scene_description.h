@@ -1,0 +1,37 @@
+#pragma once
+// Everything a scene file says: geometry and camera (core), materials and lights (shading), and
+// the render settings it asks for (command-line flags override them).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/scene.h"
+#include "core/image/image_output.h"
+#include "core/sphere_method.h"
+#include "shading/shading_scene.h"
+#include "shading/whitted.h"
+
+namespace rayo {
+
+struct RenderSettings {
+    int spp = 1;
+    int tile_size = 16;
+    SphereMath sphere_math = SphereMath::Stable;
+    SphereRepresentation spheres{SphereMethod::Auto};  // --sphere-method; auto by default
+    float max_error_px = 0.5f;                         // auto's error budget, in pixels
+    bool coherent = true;  // tiles' camera and shadow rays as Embree streams (--single-rays: no)
+    WhittedSettings whitted;
+};
+
+struct SceneDescription {
+    std::string source;  // file path, or "<default>" for the built-in scene
+    Scene scene;
+    ShadingScene shading;
+    RenderSettings settings;
+    // Input that was dropped rather than refused (e.g. zero-area patches of a tessellation),
+    // each "where: what"; the CLI prints them. skipped_triangles counts the triangles they held.
+    std::vector<std::string> warnings;
+    size_t skipped_triangles = 0;
+};
+
+}  // namespace rayo

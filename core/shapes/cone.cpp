@@ -1,0 +1,82 @@
+#include "core/shapes/cone.h"
+
+#include <cmath>
+
+namespace rayo {
+
+ConeFrame make_cone_frame(const Cone& cone) {
+    ConeFrame f;
+    f.base = DVec3(cone.base);
+    const DVec3 axis_full = DVec3(cone.apex) - f.base;
+    f.height = glm::length(axis_full);
+    if (!(f.height > 0.0)) {
+        f.height = 0.0;
+        return f;
+    }
+    f.axis = axis_full / f.height;
+    f.base_radius = cone.base_radius;
+    f.slope = (double(cone.apex_radius) - f.base_radius) / f.height;
+    return f;
+}
+
+void cone_bounds(const Cone& cone, Vec3& lower, Vec3& upper) {
+    const Vec3 axis_full = cone.apex - cone.base;
+    const float length = glm::length(axis_full);
+    const Vec3 axis = length > 0.0f ? axis_full / length : Vec3(0.0f);
+    // Half-extent of a unit circle around `axis`, per world axis (rounded up a little).
+    const Vec3 extent = glm::sqrt(glm::max(Vec3(1.0f) - axis * axis, Vec3(0.0f))) * 1.0001f;
+    lower = glm::min(cone.base - cone.base_radius * extent, cone.apex - cone.apex_radius * extent);
+    upper = glm::max(cone.base + cone.base_radius * extent, cone.apex + cone.apex_radius * extent);
+}
+
+bool intersect_cone(const ConeFrame& cone, const Vec3& origin, const Vec3& direction,
+                    float tnear, float tfar, float& t_out, Vec3& normal) {
+    if (cone.height == 0.0) return false;
+    const DVec3& base = cone.base;
+    const DVec3& axis = cone.axis;
+    const double height = cone.height;
+    const double r0 = cone.base_radius;
+    const double slope = cone.slope;
+
+    const DVec3 d(direction), w = DVec3(origin) - base;
+    const double w_axis = glm::dot(w, axis), d_axis = glm::dot(d, axis);
+    const DVec3 w_perp = w - w_axis * axis, d_perp = d - d_axis * axis;
+    // |w⊥ + t·d⊥|² = (R + K·t)², R = r0 + slope·(w·a), K = slope·(d·a)
+    const double radius_at_origin = r0 + slope * w_axis, radius_rate = slope * d_axis;
+    const double a = glm::dot(d_perp, d_perp) - radius_rate * radius_rate;
+    const double b = 2.0 * (glm::dot(w_perp, d_perp) - radius_at_origin * radius_rate);
+    const double c = glm::dot(w_perp, w_perp) - radius_at_origin * radius_at_origin;
+
+    double roots[2];
+    int count = 0;
+    if (std::abs(a) < 1e-14) {
+        if (std::abs(b) < 1e-300) return false;
+        roots[count++] = -c / b;
+    } else {
+        const double discriminant = b * b - 4.0 * a * c;
+        if (discriminant < 0.0) return false;
+        const double q = -0.5 * (b + std::copysign(std::sqrt(discriminant), b));
+        double t0 = q / a, t1 = (q != 0.0) ? c / q : t0;
+        if (t0 > t1) std::swap(t0, t1);
+        roots[count++] = t0;
+        roots[count++] = t1;
+    }
+    for (int i = 0; i < count; ++i) {
+        const double t = roots[i];
+        if (!(t > tnear && t < tfar)) continue;
+        const double s = w_axis + t * d_axis;
+        const double radius = r0 + slope * s;
+        if (s < 0.0 || s > height || radius < 0.0) continue;  // outside the segment / other nappe
+        const DVec3 radial = w_perp + t * d_perp;
+        // Gradient of |p⊥|² − r(s)²: 2p⊥ − 2·r(s)·slope·a.
+        const DVec3 gradient = radial - radius * slope * axis;
+        const double length = glm::length(gradient);
+        if (!(length > 0.0)) continue;
+        t_out = static_cast<float>(t);
+        normal = Vec3(gradient / length);
+        return true;
+    }
+    return false;
+}
+
+}  // namespace rayo

@@ -1,0 +1,433 @@
+// The catalogue of bad input (issue 5), end to end through the `rayo` executable (RAYO_CLI_PATH):
+// every case must exit non-zero, print "rayo: error: <place>: <what was expected>" with the place
+// as file:line (NFF, OBJ), file:line:column (JSON syntax) or file#/json/pointer, and leave no
+// file behind (no image, no temporary). The loaders' own tests (nff_loader_test.cpp,
+// json_loader_test.cpp, mesh_loader_test.cpp) check the messages in detail; cli_test.cpp covers
+// the flags and NFF cameras; this file covers each kind of bad input for each format at the CLI.
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "tests/cli/cli_fixture.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using rayo_test::CommandResult;
+
+// One bad input: the file's text, the place the error must name and what it must say.
+struct BadCase {
+    std::string label;
+    std::string text;
+    std::string place;
+    std::string expected;
+};
+
+class BadInput : public rayo_test::CliFixture {
+  protected:
+    // Copies a file of tests/data/bad/ into the test's folder.
+    void copy_data(const std::string& name) {
+        fs::copy_file(fs::path(RAYO_TEST_DATA_DIR) / "bad" / name, m_dir / name,
+                      fs::copy_options::overwrite_existing);
+    }
+
+    // Runs `args`, expects exit status `exit_code`, "rayo: error: " followed by the place, the
+    // expected text, and the folder exactly as it was before (nothing written).
+    void expect_refused(const std::string& args, const std::string& place,
+                        const std::string& expected, const std::string& label, int exit_code = 1) {
+        const std::set<std::string> before = listing();
+        const CommandResult r = run(args);
+        EXPECT_EQ(r.exit_code, exit_code) << label << ": " << args << "\n" << r.output;
+        EXPECT_NE(r.output.find("rayo: error: " + place), std::string::npos)
+            << label << ": the message does not start with the place '" << place << "':\n"
+            << r.output;
+        EXPECT_NE(r.output.find(expected), std::string::npos)
+            << label << ": the message does not say '" << expected << "':\n"
+            << r.output;
+        EXPECT_EQ(listing(), before) << label << ": files were left behind";
+    }
+
+    // Writes each case as `scene_name` and renders it.
+    void expect_cases_refused(const std::string& scene_name, const std::vector<BadCase>& cases) {
+        for (const BadCase& c : cases) {
+            write(scene_name, c.text);
+            expect_refused("render " + scene_name + " -o out.png", c.place, c.expected, c.label);
+            fs::remove(m_dir / scene_name);
+        }
+    }
+};
+
+class BadInputNff : public BadInput {};
+class BadInputJson : public BadInput {};
+class BadInputObj : public BadInput {};
+class BadInputGltf : public BadInput {};
+class BadInputCli : public BadInput {};
+
+// ---- NFF ----------------------------------------------------------------------------------
+
+// A valid NFF view block (lines 1-7) and material (line 8): line 9 is the first object line.
+const std::string kView =
+    "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution 32 24\n"
+    "f 1 0 0 0.8 0.2 20 0 1\n";
+
+std::string view_with(const std::string& resolution) {
+    return "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution " + resolution +
+           "\ns 0 0 0 1\n";
+}
+
+TEST_F(BadInputNff, TruncatedAndBinaryFiles) {
+    copy_data("truncated.nff");  // ends inside the third vertex of a 4-vertex polygon
+    expect_refused("render truncated.nff -o out.png", "truncated.nff:12", "expects 3 numbers",
+                   "truncated polygon");
+    copy_data("binary.nff");  // a PNG header
+    expect_refused("render binary.nff -o out.png", "binary.nff:1", "not an NFF text file",
+                   "binary file");
+    expect_cases_refused(
+        "bad.nff",
+        {
+            {"view block cut short", "v\nfrom 0 0 5\nat 0 0", "bad.nff:3", "'at' expects 3"},
+            {"polygon cut short", kView + "p 5\n0 0 0\n1 0 0\n1 1 0\n", "bad.nff:9",
+             "polygon declares 5 vertices, the file ends after 3"},
+            {"empty file", "", "bad.nff:1", "no viewpoint"},
+            {"NUL byte", kView + std::string("s 0 0\0 0 1\n", 11), "bad.nff:9", "NUL byte"},
+        });
+}
+
+TEST_F(BadInputNff, UnknownEntitiesAndWrongArgumentCounts) {
+    expect_cases_refused(
+        "bad.nff",
+        {
+            {"unknown entity", kView + "torus 0 0 0 1 2\n", "bad.nff:9", "'torus'"},
+            {"sphere with 3 numbers", kView + "s 0 0 1\n", "bad.nff:9", "'s' expects 4 numbers"},
+            {"sphere with 5 numbers", kView + "s 0 0 0 1 1\n", "bad.nff:9", "'s' expects 4"},
+            {"light with 4 numbers", kView + "l 1 2 3 4\n", "bad.nff:9", "'l' expects 3"},
+            {"material with 7 numbers", kView + "f 1 1 1 1 0 1 0\n", "bad.nff:9",
+             "'f' expects 8 numbers"},
+            {"polygon vertex with 4 numbers", kView + "p 3\n0 0 0\n1 0 0 7\n0 1 0\n", "bad.nff:11",
+             "expects 3 numbers"},
+        });
+}
+
+TEST_F(BadInputNff, NanInfiniteAndAbsurdMagnitudes) {
+    expect_cases_refused(
+        "bad.nff",
+        {
+            {"NaN radius", kView + "s 0 0 0 nan\n", "bad.nff:9", "expected a finite number"},
+            {"infinite light", kView + "l inf 0 0\n", "bad.nff:9", "expected a finite number"},
+            {"NaN vertex", kView + "p 3\n0 0 0\n1 NaN 0\n0 1 0\n", "bad.nff:11",
+             "expected a finite number"},
+            {"radius overflows float", kView + "s 0 0 0 1e39\n", "bad.nff:9",
+             "expected a finite number (in float range)"},
+            {"radius whose square overflows float", kView + "s 0 0 0 1e30\n", "bad.nff:9",
+             "of magnitude <= 1e18"},
+            {"radius overflows double", kView + "s 0 0 0 1e999\n", "bad.nff:9", "out of range"},
+            {"infinite angle", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle inf\n", "bad.nff:5",
+             "expected a finite number"},
+        });
+}
+
+TEST_F(BadInputNff, ZeroAndAbsurdResolutions) {
+    expect_cases_refused(
+        "bad.nff",
+        {
+            {"zero width", view_with("0 24"), "bad.nff:7", "resolution must be positive"},
+            {"negative height", view_with("32 -24"), "bad.nff:7", "resolution must be positive"},
+            {"side over the limit", view_with("40000 30"), "bad.nff:7", "at most 32768"},
+            {"pixels over the limit", view_with("30000 30000"), "bad.nff:1",
+             "exceeds the limit of 32768 pixels a side and 268435456 pixels in all"},
+            {"fractional", view_with("32.5 24"), "bad.nff:7", "expected an integer"},
+            {"one number", view_with("32"), "bad.nff:7", "'resolution' expects 2 integers"},
+        });
+}
+
+TEST_F(BadInputNff, DegeneratePolygons) {
+    expect_cases_refused(
+        "bad.nff",
+        {
+            {"two vertices", kView + "p 2\n0 0 0\n1 0 0\n", "bad.nff:9", "at least 3 vertices"},
+            {"collinear", kView + "p 3\n0 0 0\n1 1 1\n2 2 2\n", "bad.nff:9", "degenerate polygon"},
+            {"zero patch normal", kView + "pp 3\n0 0 0 0 0 1\n1 0 0 0 0 0\n0 1 0 0 0 1\n",
+             "bad.nff:11", "vertex normal has zero length"},
+            {"degenerate cone", kView + "c 1 2 3 1 1 2 3 0.5\n", "bad.nff:9", "zero length"},
+        });
+}
+
+// ---- JSON ---------------------------------------------------------------------------------
+
+std::string with_object(const std::string& object) {
+    return "{\"rayo\": 1, \"objects\": [" + object + "]}";
+}
+
+std::string with_camera(const std::string& camera) {
+    return "{\"rayo\": 1, \"camera\": {" + camera + "}}";
+}
+
+TEST_F(BadInputJson, TruncatedAndBinaryFiles) {
+    copy_data("truncated.json");  // ends inside a key on line 4
+    expect_refused("render truncated.json -o out.png", "truncated.json:4:", "missing closing quote",
+                   "truncated file");
+    copy_data("binary.json");
+    expect_refused("render binary.json -o out.png", "binary.json:1:1", "invalid JSON",
+                   "binary file");
+    copy_data("utf16.json");  // UTF-16 with a byte-order mark: JSON must be UTF-8
+    expect_refused("render utf16.json -o out.png", "utf16.json:1:1", "invalid JSON", "UTF-16 file");
+    expect_cases_refused("bad.json", {
+                                         {"empty file", "", "bad.json:1:1", "invalid JSON"},
+                                         {"unclosed array", "{\"rayo\": 1, \"objects\": [\n",
+                                          "bad.json:2:1", "invalid JSON"},
+                                     });
+}
+
+TEST_F(BadInputJson, UnknownEntitiesAndWrongArgumentCounts) {
+    expect_cases_refused(
+        "bad.json",
+        {
+            {"unknown object type", with_object(R"({"type": "torus"})"), "bad.json#/objects/0/type",
+             "expected one of"},
+            {"unknown light type", R"({"rayo": 1, "lights": [{"type": "spot"}]})",
+             "bad.json#/lights/0/type", "expected one of \"point\", \"directional\""},
+            {"unknown key", R"({"rayo": 1, "camara": {}})", "bad.json#/camara",
+             "unknown key \"camara\""},
+            {"centre with 2 numbers", with_object(R"({"type": "sphere", "center": [0, 0],
+                                                    "radius": 1})"),
+             "bad.json#/objects/0/center", "expected an array of 3 numbers"},
+            {"centre with 4 numbers", with_object(R"({"type": "sphere", "center": [0, 0, 0, 0],
+                                                    "radius": 1})"),
+             "bad.json#/objects/0/center", "got an array of 4"},
+            {"triangle with 4 vertices",
+             with_object(R"({"type": "triangle", "vertices": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]]})"),
+             "bad.json#/objects/0/vertices", "expected an array of 3 vertices"},
+            {"cone without apex radius",
+             with_object(R"({"type": "cone", "base": [0,0,0], "apex": [0,1,0], "base_radius": 1})"),
+             "bad.json#/objects/0/apex_radius", "missing required field \"apex_radius\""},
+        });
+}
+
+TEST_F(BadInputJson, NanInfiniteAndAbsurdMagnitudes) {
+    expect_cases_refused(
+        "bad.json",
+        {
+            {"NaN literal", R"({"rayo": 1, "background": NaN})", "bad.json:1:", "invalid literal"},
+            {"Infinity literal", R"({"rayo": 1, "ambient_light": Infinity})",
+             "bad.json:1:", "invalid literal"},
+            {"number overflows double", "{\"rayo\": 1,\n \"background\": 1e999}", "bad.json:2:16",
+             "1e999"},
+            {"radius overflows float",
+             with_object(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1e39})"),
+             "bad.json#/objects/0/radius", "fits a float"},
+            {"radius whose square overflows float",
+             with_object(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1e30})"),
+             "bad.json#/objects/0/radius", "magnitude <= 1e18"},
+            {"centre overflows float",
+             with_object(R"({"type": "sphere", "center": [0, -4e38, 0], "radius": 1})"),
+             "bad.json#/objects/0/center/1", "fits a float"},
+        });
+}
+
+TEST_F(BadInputJson, DegenerateCameras) {
+    expect_cases_refused(
+        "bad.json",
+        {
+            {"eye = look_at", with_camera(R"("eye": [1, 2, 3], "look_at": [1, 2, 3])"),
+             "bad.json#/camera/look_at", "differ from eye"},
+            {"up parallel to view", with_camera(R"("eye": [0, 5, 0], "look_at": [0, 0, 0])"),
+             "bad.json#/camera", "parallel"},
+            {"zero up", with_camera(R"("up": [0, 0, 0])"), "bad.json#/camera", "up"},
+            {"hfov 0", with_camera(R"("hfov": 0)"), "bad.json#/camera/hfov", "expected a number"},
+            {"vfov 180", with_camera(R"("vfov": 180)"), "bad.json#/camera/vfov", "(0, 180)"},
+            {"hfov 270", with_camera(R"("hfov": 270)"), "bad.json#/camera/hfov", "(0, 180)"},
+            {"distance 0", with_camera(R"("distance": 0)"), "bad.json#/camera/distance",
+             "expected a number > 0"},
+        });
+}
+
+TEST_F(BadInputJson, ZeroAndAbsurdResolutions) {
+    expect_cases_refused(
+        "bad.json", {
+                        {"zero width", with_camera(R"("width": 0)"), "bad.json#/camera/width",
+                         "expected an integer in [1, 32768]"},
+                        {"zero height", with_camera(R"("height": 0)"), "bad.json#/camera/height",
+                         "expected an integer in [1, 32768]"},
+                        {"side over the limit", with_camera(R"("width": 40000)"),
+                         "bad.json#/camera/width", "expected an integer in [1, 32768], got 40000"},
+                        {"pixels over the limit", with_camera(R"("width": 30000, "height": 30000)"),
+                         "bad.json#/camera", "exceeds the limit"},
+                        {"fractional width", with_camera(R"("width": 64.5)"),
+                         "bad.json#/camera/width", "expected an integer"},
+                        {"width over int", with_camera(R"("width": 1e12)"),
+                         "bad.json#/camera/width", "expected an integer"},
+                    });
+}
+
+TEST_F(BadInputJson, DegeneratePolygons) {
+    expect_cases_refused(
+        "bad.json",
+        {
+            {"two vertices", with_object(R"({"type": "polygon", "vertices": [[0,0,0],[1,0,0]]})"),
+             "bad.json#/objects/0/vertices", "at least 3 vertices"},
+            {"collinear polygon",
+             with_object(R"({"type": "polygon", "vertices": [[0,0,0],[1,1,1],[2,2,2],[3,3,3]]})"),
+             "bad.json#/objects/0/vertices", "non-zero area"},
+            {"collinear triangle",
+             with_object(R"({"type": "triangle", "vertices": [[0,0,0],[1,0,0],[2,0,0]]})"),
+             "bad.json#/objects/0/vertices", "non-zero area"},
+        });
+}
+
+TEST_F(BadInputJson, MissingMeshFiles) {
+    expect_cases_refused(
+        "bad.json",
+        {
+            {"missing obj", with_object(R"({"type": "mesh", "file": "none.obj"})"),
+             "bad.json#/objects/0/file", "mesh file not found: 'none.obj'"},
+            {"missing glb in a folder", with_object(R"({"type": "mesh", "file": "no/none.glb"})"),
+             "bad.json#/objects/0/file", "'no/none.glb'"},
+            {"unknown mesh format", with_object(R"({"type": "mesh", "file": "a.stl"})"),
+             "bad.json#/objects/0/file", ".obj, .gltf or .glb"},
+            {"folder as mesh", with_object(R"({"type": "mesh", "file": "."})"),
+             "bad.json#/objects/0/file", ".obj, .gltf or .glb"},
+        });
+}
+
+// ---- OBJ (through a JSON scene that references m.obj) ---------------------------------------
+
+const std::string kObjScene = with_object(R"({"type": "mesh", "file": "m.obj"})");
+
+TEST_F(BadInputObj, TruncatedAndBinaryFiles) {
+    write("scene.json", kObjScene);
+    copy_data("binary.obj");
+    fs::rename(m_dir / "binary.obj", m_dir / "m.obj");
+    expect_refused("render scene.json -o out.png", "m.obj:2", "not an OBJ text file", "binary obj");
+    fs::remove(m_dir / "m.obj");
+    const std::vector<BadCase> cases = {
+        {"cut inside a vertex", "v 0 0 0\nv 1 0 0\nv 0 1", "m.obj:3", "'v' expects 3 numbers"},
+        {"cut inside a face", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2", "m.obj:4", "at least 3 vertices"},
+        {"empty", "", "scene.json#/objects/0/file", "no (non-degenerate) triangles"},
+    };
+    for (const BadCase& c : cases) {
+        write("m.obj", c.text);
+        expect_refused("render scene.json -o out.png", c.place, c.expected, c.label);
+    }
+}
+
+TEST_F(BadInputObj, WrongCountsNanInfiniteAndAbsurdValues) {
+    write("scene.json", kObjScene);
+    const std::string tail = "v 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const std::vector<BadCase> cases = {
+        {"vertex with 2 numbers", "v 0 0\n" + tail, "m.obj:1", "'v' expects 3 numbers"},
+        {"vertex with a word", "v 0 zero 0\n" + tail, "m.obj:1", "got 'zero'"},
+        {"NaN vertex", "v 0 0 nan\n" + tail, "m.obj:1", "expected a finite number"},
+        {"infinite vertex", "v 0 0 inf\n" + tail, "m.obj:1", "expected a finite number"},
+        {"vertex overflows float", "v 0 0 1e39\n" + tail, "m.obj:1",
+         "expected a finite number (in float range)"},
+        {"normal with 2 numbers", "v 0 0 0\n" + tail + "vn 0 1\n", "m.obj:5",
+         "'vn' expects 3 numbers"},
+        {"face index past the end", "v 0 0 0\n" + tail + "f 1 2 9\n", "m.obj:5",
+         "face index out of bounds"},
+    };
+    for (const BadCase& c : cases) {
+        write("m.obj", c.text);
+        expect_refused("render scene.json -o out.png", c.place, c.expected, c.label);
+    }
+}
+
+TEST_F(BadInputObj, DegenerateFacesAndMissingMaterials) {
+    write("scene.json", kObjScene);
+    const std::vector<BadCase> cases = {
+        {"two-vertex face", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", "m.obj:4", "at least 3 vertices"},
+        {"only collinear faces", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n",
+         "scene.json#/objects/0/file", "no (non-degenerate) triangles"},
+        {"missing material library", "mtllib none.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+         "m.obj", "none.mtl"},
+        {"unknown material", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl nope\nf 1 2 3\n", "m.obj",
+         "'nope'"},
+    };
+    for (const BadCase& c : cases) {
+        write("m.obj", c.text);
+        expect_refused("render scene.json -o out.png", c.place, c.expected, c.label);
+    }
+    // A transform that pushes the mesh past the scene magnitude (1e18, core/scene.h).
+    write("m.obj", "v 1000 0 0\nv 0 1000 0\nv 0 0 1000\nf 1 2 3\n");
+    write("big.json",
+          with_object(R"({"type": "mesh", "file": "m.obj", "transform": {"scale": 1e17}})"));
+    expect_refused("render big.json -o out.png", "big.json#/objects/0/transform",
+                   "does not fit in floats", "transform overflow");
+}
+
+// ---- glTF (through a JSON scene that references m.gltf) -------------------------------------
+
+TEST_F(BadInputGltf, TruncatedFileAndMissingBuffer) {
+    write("scene.json", with_object(R"({"type": "mesh", "file": "m.gltf"})"));
+    write("m.gltf", R"({"asset": {"version": "2.0"}, "meshes": [)");
+    expect_refused("render scene.json -o out.png", "m.gltf", "malformed glTF", "truncated gltf");
+    write("m.gltf", R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "none.bin",
+                       "byteLength": 44}]})");
+    expect_refused("render scene.json -o out.png", "m.gltf", "none.bin", "missing buffer");
+    write("scene.json", with_object(R"({"type": "mesh", "file": "m.glb"})"));
+    copy_data("binary.obj");  // not glTF's binary container
+    fs::rename(m_dir / "binary.obj", m_dir / "m.glb");
+    expect_refused("render scene.json -o out.png", "m.glb", "glTF", "not a glb");
+}
+
+// ---- the command line -----------------------------------------------------------------------
+
+const char* const kGoodNff =
+    "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution 32 24\n"
+    "l 3 3 3\nf 1 0 0 0.8 0.2 20 0 1\ns 0 0 0 1\n";
+
+TEST_F(BadInputCli, UnwritableOutputs) {
+    write("scene.nff", kGoodNff);
+    fs::create_directories(m_dir / "folder.png");
+    expect_refused("render scene.nff -o folder.png", "folder.png", "cannot write",
+                   "output is a folder");
+    expect_refused("render scene.nff -o scene.nff/x.png", "scene.nff/x.png", "cannot write",
+                   "parent is a file");
+    expect_refused("render scene.nff -o /proc/rayo_bad_input.exr", "/proc/rayo_bad_input.exr",
+                   "cannot write", "read-only file system");
+    expect_refused("render scene.nff -o out", "out", "", "no extension");
+    write("scene.json", "{\"rayo\": 1}");
+    expect_refused("render scene.json -o no/such/dir/x.exr", "no/such/dir/x.exr", "cannot write",
+                   "json scene, missing folder");
+}
+
+TEST_F(BadInputCli, FlagValuesCliTestDoesNotCover) {
+    write("scene.nff", kGoodNff);
+    struct Flag {
+        const char* args;
+        const char* expected;
+    };
+    const Flag flags[] = {
+        {"--tile-size 0", "--tile-size: expected an integer in [1, 4096], got '0'"},
+        {"--tile-size 5000", "--tile-size: expected an integer in [1, 4096]"},
+        {"--threads 5000", "--threads: expected an integer in [1, 4096]"},
+        {"--spp 70000", "--spp: expected an integer in [1, 65536]"},
+        {"--max-depth -1", "--max-depth: expected an integer in [0, 64], got '-1'"},
+        {"--max-depth 65", "--max-depth: expected an integer in [0, 64], got '65'"},
+        {"--width 12px", "--width: expected an integer in [1, 32768], got '12px'"},
+        {"--width ''", "--width: expected an integer in [1, 32768], got ''"},
+        {"--width 1e3", "--width: expected an integer"},
+        {"--height 2147483648", "--height: expected an integer"},
+        {"--width=64", "unknown option '--width=64'"},
+        {"--range", "--range: missing value"},
+        {"--view", "--view: missing value"},
+    };
+    for (const Flag& f : flags) {
+        expect_refused(std::string("render scene.nff -o out.png ") + f.args, "", f.expected, f.args,
+                       2);
+    }
+    expect_refused("info", "info", "expected exactly one scene file", "info without scene", 2);
+    expect_refused("info scene.nff scene.nff", "info", "expected exactly one scene file",
+                   "info with two scenes", 2);
+    // Values that parse but that the scene or the output cannot take: exit status 1.
+    expect_refused("render scene.nff -o out.png --width 30000 --height 30000", "scene.nff#/camera",
+                   "exceeds the limit", "resolution flags over the pixel limit");
+    expect_refused("render scene.nff -o out.png --display Nope", "out.png",
+                   "unknown OCIO display 'Nope'", "unknown display");
+    expect_refused("info nowhere.json", "nowhere.json", "cannot open", "info of a missing file");
+}
+
+}  // namespace

@@ -1,0 +1,184 @@
+// The `rayo` executable end to end: exit status, error messages that name the place, and no
+// output file left behind on failure. Runs the built binary (RAYO_CLI_PATH) in a temp folder.
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests/cli/cli_fixture.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using rayo_test::CommandResult;
+
+class CliTest : public rayo_test::CliFixture {
+  protected:
+    // Files in the folder other than `keep` (an input the test wrote).
+    int count_files_except(const std::string& keep) const {
+        int n = 0;
+        for (const std::string& name : listing()) n += name != keep;
+        return n;
+    }
+};
+
+const char* const kSmallNff =
+    "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution 32 24\n"
+    "b 0.1 0.2 0.3\nl 3 3 3\nf 1 0 0 0.8 0.2 20 0 1\ns 0 0 0 1\n";
+
+TEST_F(CliTest, RendersDefaultSceneToPng) {
+    const CommandResult r = run("render -o out.png --width 80 --height 60");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_TRUE(fs::exists(m_dir / "out.png"));
+    EXPECT_NE(r.output.find("Mrays/s"), std::string::npos) << r.output;  // the summary line
+    EXPECT_NE(r.output.find("shadow"), std::string::npos);
+}
+
+TEST_F(CliTest, RendersNffToEveryFormat) {
+    write("scene.nff", kSmallNff);
+    for (const char* out : {"a.exr", "a.png", "a.tif", "a.jpg"}) {
+        const CommandResult r = run(std::string("render scene.nff --quiet -o ") + out);
+        EXPECT_EQ(r.exit_code, 0) << out << ": " << r.output;
+        EXPECT_TRUE(fs::exists(m_dir / out)) << out;
+        EXPECT_TRUE(r.output.empty()) << "--quiet printed: " << r.output;
+    }
+}
+
+TEST_F(CliTest, StatsPrintsTheFullTable) {
+    write("scene.nff", kSmallNff);
+    const CommandResult r = run("render scene.nff --stats -o s.exr");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    for (const char* row : {"rays camera", "rays shadow", "rays reflection", "rays refraction",
+                            "total internal reflections", "paths cut by depth", "time BVH build"}) {
+        EXPECT_NE(r.output.find(row), std::string::npos) << row;
+    }
+    EXPECT_NE(r.output.find("rays camera                 768"), std::string::npos) << r.output;
+}
+
+TEST_F(CliTest, HelpAndVersion) {
+    CommandResult r = run("--help");
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.output.find("rayo render [SCENE]"), std::string::npos);
+    r = run("render --help");
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.output.find("--max-depth"), std::string::npos);
+    r = run("--version");
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.output.find("rayo "), std::string::npos);
+}
+
+struct BadFlag {
+    const char* args;
+    const char* message;
+};
+
+TEST_F(CliTest, BadFlagsAreRefusedWithoutOutput) {
+    const BadFlag cases[] = {
+        {"render --frobnicate -o x.png", "unknown option '--frobnicate'"},
+        {"render --width abc -o x.png", "--width: expected an integer"},
+        {"render --width 0 -o x.png", "--width: expected an integer in [1,"},
+        {"render --height -5 -o x.png", "--height: expected an integer"},
+        {"render --width 99999999 -o x.png", "--width: expected an integer"},
+        {"render --spp 0 -o x.png", "--spp: expected an integer"},
+        {"render --threads 0 -o x.png", "--threads: expected an integer"},
+        {"render --max-depth 1000 -o x.png", "--max-depth: expected an integer in [0, 64]"},
+        {"render --sphere-math fast -o x.png",
+         "--sphere-math: expected 'stable', 'seed' or 'double'"},
+        {"render --sphere-method mesh:9 -o x.png", "--sphere-method: expected auto, user"},
+        {"render --sphere-method bvh -o x.png", "got 'bvh'"},
+        {"render --max-error-px 0 -o x.png", "--max-error-px: expected a number in [1e-06"},
+        {"render --max-error-px nan -o x.png", "--max-error-px: expected a number in"},
+        {"render --max-error-px 2x -o x.png", "--max-error-px: expected a number in"},
+        {"render --range log -o x.png", "--range: expected 'clamp' or 'normalize'"},
+        {"render -o", "-o: missing value"},
+        {"render a.nff b.nff -o x.png", "unexpected argument 'b.nff'"},
+        {"explode", "unknown command 'explode'"},
+    };
+    for (const BadFlag& c : cases) {
+        const CommandResult r = run(c.args);
+        EXPECT_EQ(r.exit_code, 2) << c.args;
+        EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << " -> " << r.output;
+        EXPECT_EQ(count_files_except(""), 0) << c.args;
+    }
+}
+
+TEST_F(CliTest, MissingSceneFileNamesIt) {
+    const CommandResult r = run("render nowhere.nff -o x.png");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.output.find("nowhere.nff"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(m_dir / "x.png"));
+}
+
+TEST_F(CliTest, UnknownSceneExtension) {
+    write("scene.txt", kSmallNff);
+    const CommandResult r = run("render scene.txt -o x.png");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.output.find("scene.txt: unknown scene format"), std::string::npos) << r.output;
+    EXPECT_EQ(count_files_except("scene.txt"), 0);
+}
+
+TEST_F(CliTest, UnwritableOutputLeavesNothing) {
+    write("scene.nff", kSmallNff);
+    CommandResult r = run("render scene.nff -o no/such/dir/x.png");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.output.find("no/such/dir/x.png"), std::string::npos) << r.output;
+    r = run("render scene.nff -o x.bmpx");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.output.find("x.bmpx"), std::string::npos) << r.output;
+    EXPECT_EQ(count_files_except("scene.nff"), 0);
+}
+
+TEST_F(CliTest, UnknownViewIsRefusedAndLeavesNothing) {
+    write("scene.nff", kSmallNff);
+    const CommandResult r = run("render scene.nff --view Nope -o x.png");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.output.find("Nope"), std::string::npos) << r.output;
+    EXPECT_EQ(count_files_except("scene.nff"), 0);
+}
+
+TEST_F(CliTest, DegenerateCamerasAreRefusedWithTheirLine) {
+    struct Case {
+        const char* view;
+        const char* message;
+    };
+    const Case cases[] = {
+        {"from 0 0 0\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0\nresolution 8 8\n", "look_at"},
+        {"from 0 0 5\nat 0 0 0\nup 0 0 1\nangle 40\nhither 0\nresolution 8 8\n", "parallel"},
+        {"from 0 0 5\nat 0 0 0\nup 0 1 0\nangle 180\nhither 0\nresolution 8 8\n", "(0, 180)"},
+        {"from 0 0 5\nat 0 0 0\nup 0 1 0\nangle 0\nhither 0\nresolution 8 8\n", "(0, 180)"},
+    };
+    for (const Case& c : cases) {
+        write("bad.nff", std::string("v\n") + c.view + "f 1 1 1 1 0 1 0 1\ns 0 0 0 1\n");
+        const CommandResult r = run("render bad.nff -o x.png");
+        EXPECT_EQ(r.exit_code, 1) << c.view;
+        EXPECT_NE(r.output.find("bad.nff:1"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(c.message), std::string::npos) << r.output;
+        EXPECT_FALSE(fs::exists(m_dir / "x.png"));
+    }
+}
+
+TEST_F(CliTest, EverySphereMethodRendersAndStatsSayWhichRan) {
+    write("scene.nff", kSmallNff);
+    for (const char* method : {"bruteforce", "user", "embree-point", "mesh:2"}) {
+        const CommandResult r =
+            run(std::string("render scene.nff --stats -o m.exr --sphere-method ") + method);
+        EXPECT_EQ(r.exit_code, 0) << method << ": " << r.output;
+        EXPECT_NE(r.output.find(std::string("sphere method               ") + method),
+                  std::string::npos)
+            << r.output;
+    }
+    const CommandResult r = run("render scene.nff --stats -o m.exr --sphere-math double");
+    EXPECT_NE(r.output.find("user (double)"), std::string::npos) << r.output;
+    const CommandResult a = run("render scene.nff --stats -o m.exr");
+    EXPECT_NE(a.output.find("user (stable): user/stable: analytic"), std::string::npos) << a.output;
+}
+
+TEST_F(CliTest, WidthAloneKeepsAspectRatio) {
+    write("scene.nff", kSmallNff);  // 32x24
+    const CommandResult r = run("render scene.nff --width 64 --stats -o x.exr");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("64x48"), std::string::npos) << r.output;
+}
+
+}  // namespace

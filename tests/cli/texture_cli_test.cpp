@@ -1,0 +1,76 @@
+// `rayo texture NAME`: the texture laid flat, written through the CLI, and its flag errors.
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "apps/cli/cli.h"
+#include "shading/texture.h"
+
+namespace rayo {
+namespace {
+
+
+// ---- `rayo texture NAME` ---------------------------------------------------------------------
+
+int cli(std::vector<std::string> args, std::string* err_text = nullptr) {
+    args.insert(args.begin(), "rayo");
+    std::vector<const char*> argv;
+    for (const std::string& a : args) argv.push_back(a.c_str());
+    std::ostringstream out, err;
+    const int rc = run_cli(static_cast<int>(argv.size()), argv.data(), out, err);
+    if (err_text) *err_text = err.str();
+    return rc;
+}
+
+TEST(TextureCli, WritesTheTextureFlatAndRefusesBadFlags) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("rayo_texture_cli_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string exr = (dir / "pool.exr").string();
+    ASSERT_EQ(cli({"texture", "pool-bottom", "-o", exr, "--size", "40x24", "--seed", "3"}), 0);
+    auto in = OIIO::ImageInput::open(exr);
+    ASSERT_TRUE(in);
+    const OIIO::ImageSpec& spec = in->spec();
+    ASSERT_EQ(spec.width, 40);
+    ASSERT_EQ(spec.height, 24);
+    std::vector<float> pixels(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+    ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
+    in->close();
+    // Exactly the texture's colours at the pixel centres of the plane z = 0, 64 px per unit.
+    Texture t = make_texture("pool-bottom");
+    t.seed = 3;
+    for (int j = 0; j < 24; j += 5) {
+        for (int i = 0; i < 40; i += 7) {
+            const Vec3 c = t.color(Vec3((i + 0.5f) / 64.0f, (24 - j - 0.5f) / 64.0f, 0.0f));
+            const float* p = &pixels[(static_cast<size_t>(j) * 40 + i) * spec.nchannels];
+            EXPECT_FLOAT_EQ(p[0], c.x);
+            EXPECT_FLOAT_EQ(p[1], c.y);
+            EXPECT_FLOAT_EQ(p[2], c.z);
+        }
+    }
+    for (const char* name : {"perlin", "cellular", "marble"}) {
+        EXPECT_EQ(cli({"texture", name, "-o", (dir / (std::string(name) + ".png")).string(),
+                       "--size", "16x16", "--scale", "0.5"}),
+                  0)
+            << name;
+    }
+    std::string err;
+    EXPECT_EQ(cli({"texture", "plaid"}, &err), 2);
+    EXPECT_NE(err.find("pool-bottom"), std::string::npos);
+    EXPECT_EQ(cli({"texture"}), 2);
+    EXPECT_EQ(cli({"texture", "perlin", "--size", "16"}), 2);
+    EXPECT_EQ(cli({"texture", "perlin", "--size", "0x16"}), 2);
+    EXPECT_EQ(cli({"texture", "perlin", "--scale", "inf"}), 2);
+    EXPECT_EQ(cli({"texture", "perlin", "--scale", "0"}), 2);
+    EXPECT_EQ(cli({"texture", "perlin", "--seed", "-1"}), 2);
+    EXPECT_EQ(cli({"texture", "perlin", "--bogus"}), 2);
+    EXPECT_EQ(cli({"texture", "perlin", "-o", (dir / "x.unknown").string()}), 1);
+    std::filesystem::remove_all(dir);
+}
+}  // namespace
+}  // namespace rayo

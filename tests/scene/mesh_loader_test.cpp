@@ -1,0 +1,466 @@
+// Tests of mesh import (apps/mesh_loader.h): OBJ with MTL materials mapped onto Phong, glTF as
+// base64-embedded .gltf, external .bin and .glb (written by the tests), node transforms, index
+// types, degenerate triangles, and the errors for missing and malformed files.
+#include "apps/scene/mesh_loader.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+
+namespace rayo {
+namespace {
+
+using Json = nlohmann::json;
+
+void expect_vec3(const Vec3& actual, float x, float y, float z, float tolerance = 1e-6f) {
+    EXPECT_NEAR(actual.x, x, tolerance);
+    EXPECT_NEAR(actual.y, y, tolerance);
+    EXPECT_NEAR(actual.z, z, tolerance);
+}
+
+class TempDir {
+  public:
+    TempDir() {
+        m_path =
+            std::filesystem::temp_directory_path() /
+            ("rayo_mesh_test_" + std::to_string(::getpid()) + "_" + std::to_string(s_counter++));
+        std::filesystem::create_directories(m_path);
+    }
+    ~TempDir() { std::filesystem::remove_all(m_path); }
+    std::string path() const { return m_path.string(); }
+    std::string write(const std::string& name, const std::string& bytes) const {
+        const auto file = m_path / name;
+        std::ofstream(file, std::ios::binary) << bytes;
+        return file.string();
+    }
+
+  private:
+    std::filesystem::path m_path;
+    static inline int s_counter = 0;
+};
+
+template <typename F>
+InputError expect_input_error(F&& f) {
+    try {
+        f();
+    } catch (const InputError& error) {
+        return error;
+    }
+    ADD_FAILURE() << "no InputError";
+    return InputError("", "");
+}
+
+// ---- OBJ ------------------------------------------------------------------------------------
+
+const char* const kMtl =
+    "newmtl plastic\nKa 0.1 0.2 0.3\nKd 0.4 0.5 0.6\nKs 0.7 0.8 0.9\nNs 50\nillum 2\n"
+    "newmtl mirror\nKd 0.1 0.1 0.1\nKs 0.9 0.8 0.7\nNs 300\nillum 3\n"
+    "newmtl glass\nKd 0 0 0\nKs 0.5 0.5 0.5\nd 0.25\nNi 1.45\nillum 2\n";
+
+const char* const kQuadsObj =
+    "mtllib mats.mtl\n"
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\n"
+    "vn 0 0 2\n"
+    "usemtl plastic\nf 1//1 2//1 3//1 4//1\n"  // a quad: two triangles
+    "usemtl mirror\nf 1 2 6\n"
+    "usemtl glass\nf 2 3 6\n";
+
+TEST(MeshLoaderObj, MtlMaterialsMappedOntoPhong) {
+    TempDir dir;
+    dir.write("mats.mtl", kMtl);
+    const std::string path = dir.write("quads.obj", kQuadsObj);
+    std::vector<Material> materials(2);  // the loader appends after existing ones
+    MeshImportStats stats;
+    const TriangleMesh mesh = load_obj(path, materials, "here", &stats);
+    EXPECT_EQ(stats.file_materials, 3u);
+    EXPECT_EQ(stats.degenerate_triangles, 0u);
+    ASSERT_EQ(materials.size(), 5u);
+    const Material& plastic = materials[2];
+    EXPECT_EQ(plastic.name, "plastic");
+    expect_vec3(plastic.ka, 0.1f, 0.2f, 0.3f);
+    expect_vec3(plastic.kd, 0.4f, 0.5f, 0.6f);
+    expect_vec3(plastic.ks, 0.7f, 0.8f, 0.9f);
+    EXPECT_EQ(plastic.shininess, 50.0f);
+    expect_vec3(plastic.reflect, 0, 0, 0);  // illum 2: no mirror
+    expect_vec3(plastic.transmit, 0, 0, 0);
+    const Material& mirror = materials[3];
+    expect_vec3(mirror.reflect, 0.9f, 0.8f, 0.7f);  // illum 3: reflect = Ks
+    EXPECT_EQ(mirror.shininess, 300.0f);
+    const Material& glass = materials[4];
+    expect_vec3(glass.transmit, 0.75f, 0.75f, 0.75f);  // 1 − d
+    EXPECT_FLOAT_EQ(glass.ior, 1.45f);
+
+    ASSERT_EQ(mesh.triangle_count(), 4u);
+    EXPECT_EQ(mesh.materials[0], 2u);
+    EXPECT_EQ(mesh.materials[1], 2u);
+    EXPECT_EQ(mesh.materials[2], 3u);
+    EXPECT_EQ(mesh.materials[3], 4u);
+    // The quad's corners carry the (normalized) file normal; the other faces have none (zero).
+    ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
+    expect_vec3(mesh.normals[mesh.triangles[0][0]], 0, 0, 1);
+    expect_vec3(mesh.normals[mesh.triangles[2][2]], 0, 0, 0);
+    expect_vec3(mesh.positions[mesh.triangles[2][2]], 1, 0, 1);
+}
+
+TEST(MeshLoaderObj, FacesWithoutMaterialUseDefault) {
+    TempDir dir;
+    const std::string path = dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    std::vector<Material> materials;
+    const TriangleMesh mesh = load_obj(path, materials, "here");
+    ASSERT_EQ(materials.size(), 1u);
+    EXPECT_EQ(materials[0].name, "default");
+    EXPECT_EQ(mesh.materials.at(0), 0u);
+    EXPECT_TRUE(mesh.normals.empty());
+
+    std::vector<Material> with_default(3);
+    with_default[1].name = "default";
+    const TriangleMesh again = load_obj(path, with_default, "here");
+    EXPECT_EQ(with_default.size(), 3u);  // found, not appended
+    EXPECT_EQ(again.materials.at(0), 1u);
+}
+
+TEST(MeshLoaderObj, DegenerateTrianglesDroppedAndCounted) {
+    TempDir dir;
+    const std::string path =
+        dir.write("deg.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\nf 1 1 3\n");
+    std::vector<Material> materials;
+    MeshImportStats stats;
+    const TriangleMesh mesh = load_obj(path, materials, "here", &stats);
+    EXPECT_EQ(mesh.triangle_count(), 1u);
+    EXPECT_EQ(mesh.materials.size(), 1u);
+    EXPECT_EQ(stats.degenerate_triangles, 2u);
+}
+
+TEST(MeshLoaderObj, MissingFileNamesWhereAndPath) {
+    std::vector<Material> materials;
+    const InputError error = expect_input_error(
+        [&] { load_obj("/nonexistent/rayo/x.obj", materials, "scene.json#/objects/2/file"); });
+    EXPECT_EQ(error.where(), "scene.json#/objects/2/file");
+    EXPECT_NE(error.message().find("/nonexistent/rayo/x.obj"), std::string::npos);
+}
+
+TEST(MeshLoaderObj, MalformedFaceGivesFileAndLine) {
+    TempDir dir;
+    const std::string path = dir.write("bad.obj", "# header\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+    std::vector<Material> materials;
+    const InputError error = expect_input_error([&] { load_obj(path, materials, "here"); });
+    EXPECT_EQ(error.where(), path + ":5");
+    EXPECT_NE(error.message().find("out of bounds"), std::string::npos) << error.message();
+}
+
+TEST(MeshLoaderObj, ZeroFaceIndexGivesFileAndLine) {
+    TempDir dir;
+    const std::string path = dir.write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n");
+    std::vector<Material> materials;
+    const InputError error = expect_input_error([&] { load_obj(path, materials, "here"); });
+    EXPECT_EQ(error.where(), path + ":4");
+}
+
+TEST(MeshLoaderObj, MissingMaterialLibraryIsAnError) {
+    TempDir dir;
+    const std::string path =
+        dir.write("nomtl.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    std::vector<Material> materials;
+    const InputError error = expect_input_error([&] { load_obj(path, materials, "here"); });
+    EXPECT_EQ(error.where().rfind(path, 0), 0u) << error.where();
+    EXPECT_NE(error.message().find("gone.mtl"), std::string::npos) << error.message();
+}
+
+TEST(MeshLoaderObj, NoTrianglesIsAnError) {
+    TempDir dir;
+    const std::string path = dir.write("points.obj", "v 0 0 0\nv 1 0 0\n");
+    std::vector<Material> materials;
+    const InputError error = expect_input_error([&] { load_obj(path, materials, "where"); });
+    EXPECT_EQ(error.where(), "where");
+    EXPECT_NE(error.message().find("no (non-degenerate) triangles"), std::string::npos);
+}
+
+// ---- glTF -----------------------------------------------------------------------------------
+
+std::string base64(const std::vector<uint8_t>& bytes) {
+    static const char* const kAlphabet =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        uint32_t chunk = uint32_t(bytes[i]) << 16;
+        if (i + 1 < bytes.size()) chunk |= uint32_t(bytes[i + 1]) << 8;
+        if (i + 2 < bytes.size()) chunk |= bytes[i + 2];
+        out += kAlphabet[(chunk >> 18) & 63];
+        out += kAlphabet[(chunk >> 12) & 63];
+        out += i + 1 < bytes.size() ? kAlphabet[(chunk >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? kAlphabet[chunk & 63] : '=';
+    }
+    return out;
+}
+
+template <typename T>
+void append_bytes(std::vector<uint8_t>& bin, const std::vector<T>& values) {
+    const size_t start = bin.size();
+    bin.resize(start + values.size() * sizeof(T));
+    std::memcpy(bin.data() + start, values.data(), values.size() * sizeof(T));
+    while (bin.size() % 4 != 0) bin.push_back(0);
+}
+
+// A glTF document with one mesh of one primitive: a unit right triangle in z = 0 plus a second
+// triangle (1,0,0),(1,1,0),(0,1,0), with +z normals and `index_type` indices; node 0 instances
+// it. The caller adds the buffer (uri or GLB chunk).
+struct GltfAsset {
+    Json doc;
+    std::vector<uint8_t> bin;
+};
+
+GltfAsset make_gltf(int index_type) {
+    GltfAsset a;
+    const std::vector<float> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+    const std::vector<float> normals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+    const std::vector<uint32_t> indices = {0, 1, 2, 1, 3, 2};
+    append_bytes(a.bin, positions);
+    const size_t normal_offset = a.bin.size();
+    append_bytes(a.bin, normals);
+    const size_t index_offset = a.bin.size();
+    if (index_type == 5121) {
+        append_bytes(a.bin, std::vector<uint8_t>(indices.begin(), indices.end()));
+    } else if (index_type == 5123) {
+        append_bytes(a.bin, std::vector<uint16_t>(indices.begin(), indices.end()));
+    } else {
+        append_bytes(a.bin, indices);
+    }
+    const int index_size = index_type == 5121 ? 1 : index_type == 5123 ? 2 : 4;
+    a.doc = {
+        {"asset", {{"version", "2.0"}}},
+        {"scene", 0},
+        {"scenes", {{{"nodes", {0}}}}},
+        {"nodes", {{{"mesh", 0}}}},
+        {"meshes",
+         {{{"primitives",
+            {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}},
+              {"indices", 2},
+              {"material", 0}}}}}}},
+        {"materials",
+         {{{"name", "metal"},
+           {"pbrMetallicRoughness",
+            {{"baseColorFactor", {0.5, 0.25, 1.0, 1.0}},
+             {"metallicFactor", 0.5},
+             {"roughnessFactor", 0.5}}}}}},
+        {"bufferViews",
+         {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 48}},
+          {{"buffer", 0}, {"byteOffset", normal_offset}, {"byteLength", 48}},
+          {{"buffer", 0}, {"byteOffset", index_offset}, {"byteLength", 6 * index_size}}}},
+        {"accessors",
+         {{{"bufferView", 0},
+           {"componentType", 5126},
+           {"count", 4},
+           {"type", "VEC3"},
+           {"min", {0, 0, 0}},
+           {"max", {1, 1, 0}}},
+          {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+          {{"bufferView", 2}, {"componentType", index_type}, {"count", 6}, {"type", "SCALAR"}}}},
+    };
+    return a;
+}
+
+std::string write_embedded(const TempDir& dir, const std::string& name, GltfAsset a) {
+    a.doc["buffers"] = {{{"byteLength", a.bin.size()},
+                         {"uri", "data:application/octet-stream;base64," + base64(a.bin)}}};
+    return dir.write(name, a.doc.dump());
+}
+
+std::string write_glb(const TempDir& dir, const std::string& name, GltfAsset a) {
+    a.doc["buffers"] = {{{"byteLength", a.bin.size()}}};
+    std::string json = a.doc.dump();
+    while (json.size() % 4 != 0) json += ' ';
+    std::vector<uint8_t> bin = a.bin;
+    while (bin.size() % 4 != 0) bin.push_back(0);
+    std::string out;
+    auto u32 = [&out](uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
+    out += "glTF";
+    u32(2);
+    u32(static_cast<uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
+    u32(static_cast<uint32_t>(json.size()));
+    u32(0x4E4F534Au);  // "JSON"
+    out += json;
+    u32(static_cast<uint32_t>(bin.size()));
+    u32(0x004E4942u);  // "BIN\0"
+    out.append(reinterpret_cast<const char*>(bin.data()), bin.size());
+    return dir.write(name, out);
+}
+
+TEST(MeshLoaderGltf, EmbeddedBufferWithPbrMaterial) {
+    TempDir dir;
+    const std::string path = write_embedded(dir, "tri.gltf", make_gltf(5123));
+    std::vector<Material> materials(1);
+    MeshImportStats stats;
+    const TriangleMesh mesh = load_gltf(path, materials, "here", &stats);
+    ASSERT_EQ(mesh.triangle_count(), 2u);
+    ASSERT_EQ(mesh.positions.size(), 4u);
+    expect_vec3(mesh.positions[3], 1, 1, 0);
+    EXPECT_EQ(mesh.triangles[1][0], 1u);
+    EXPECT_EQ(mesh.triangles[1][1], 3u);
+    EXPECT_EQ(mesh.triangles[1][2], 2u);
+    ASSERT_EQ(mesh.normals.size(), 4u);
+    expect_vec3(mesh.normals[2], 0, 0, 1);
+    EXPECT_EQ(mesh.materials[0], 1u);
+    EXPECT_EQ(stats.file_materials, 1u);
+    ASSERT_EQ(materials.size(), 2u);
+    const Material& m = materials[1];
+    EXPECT_EQ(m.name, "metal");
+    expect_vec3(m.kd, 0.5f, 0.25f, 1.0f);
+    expect_vec3(m.ka, 0.05f, 0.025f, 0.1f);
+    expect_vec3(m.ks, 0.54f, 0.54f, 0.54f);       // 0.04 + metallic
+    expect_vec3(m.reflect, 0.25f, 0.125f, 0.5f);  // metallic × base colour
+    EXPECT_FLOAT_EQ(m.shininess, 30.0f);          // 2/0.5⁴ − 2
+}
+
+TEST(MeshLoaderGltf, RoughnessExtremesClampShininess) {
+    for (const auto& [roughness, expected] :
+         std::vector<std::pair<double, float>>{{0.0, 10000.0f}, {1.0, 1.0f}, {0.05, 10000.0f}}) {
+        TempDir dir;
+        GltfAsset a = make_gltf(5123);
+        a.doc["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = roughness;
+        const std::string path = write_embedded(dir, "r.gltf", a);
+        std::vector<Material> materials;
+        load_gltf(path, materials, "here");
+        EXPECT_FLOAT_EQ(materials.at(0).shininess, expected) << "roughness " << roughness;
+    }
+}
+
+TEST(MeshLoaderGltf, BinaryGlbWithUnsignedByteIndices) {
+    TempDir dir;
+    const std::string path = write_glb(dir, "tri.glb", make_gltf(5121));
+    std::vector<Material> materials;
+    const TriangleMesh mesh = load_gltf(path, materials, "here");
+    ASSERT_EQ(mesh.triangle_count(), 2u);
+    EXPECT_EQ(mesh.triangles[1][1], 3u);
+    expect_vec3(mesh.positions[1], 1, 0, 0);
+}
+
+TEST(MeshLoaderGltf, ExternalBinWithUnsignedIntIndices) {
+    TempDir dir;
+    GltfAsset a = make_gltf(5125);
+    dir.write("data.bin", std::string(a.bin.begin(), a.bin.end()));
+    a.doc["buffers"] = {{{"byteLength", a.bin.size()}, {"uri", "data.bin"}}};
+    const std::string path = dir.write("ext.gltf", a.doc.dump());
+    std::vector<Material> materials;
+    const TriangleMesh mesh = load_gltf(path, materials, "here");
+    ASSERT_EQ(mesh.triangle_count(), 2u);
+    EXPECT_EQ(mesh.triangles[0][2], 2u);
+}
+
+TEST(MeshLoaderGltf, NodeTrsAndMatrixTransformsApplied) {
+    TempDir dir;
+    GltfAsset a = make_gltf(5123);
+    // Root: translate (10, 0, 0), rotate 90° about z, scale 2; child: matrix translating by
+    // (0, 0, 5). Both instance the mesh.
+    const double s = std::sqrt(0.5);
+    a.doc["nodes"] = {{{"mesh", 0},
+                       {"translation", {10, 0, 0}},
+                       {"rotation", {0, 0, s, s}},
+                       {"scale", {2, 2, 2}},
+                       {"children", {1}}},
+                      {{"mesh", 0}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 5, 1}}}};
+    const std::string path = write_embedded(dir, "trs.gltf", a);
+    std::vector<Material> materials;
+    const TriangleMesh mesh = load_gltf(path, materials, "here");
+    ASSERT_EQ(mesh.triangle_count(), 4u);
+    ASSERT_EQ(mesh.positions.size(), 8u);
+    // (1,0,0) -> scale (2,0,0) -> rotate (0,2,0) -> translate (10,2,0).
+    expect_vec3(mesh.positions[1], 10, 2, 0, 1e-5f);
+    // Child: (1,0,0) -> (1,0,5) -> parent -> (10,2,10).
+    expect_vec3(mesh.positions[5], 10, 2, 10, 1e-5f);
+    expect_vec3(mesh.normals[5], 0, 0, 1, 1e-6f);
+}
+
+TEST(MeshLoaderGltf, UnsupportedModeRejected) {
+    TempDir dir;
+    GltfAsset a = make_gltf(5123);
+    a.doc["meshes"][0]["primitives"][0]["mode"] = 5;  // TRIANGLE_STRIP
+    const std::string path = write_embedded(dir, "strip.gltf", a);
+    std::vector<Material> materials;
+    const InputError error = expect_input_error([&] { load_gltf(path, materials, "here"); });
+    EXPECT_EQ(error.where(), path);
+    EXPECT_NE(error.message().find("unsupported primitive mode 5"), std::string::npos)
+        << error.message();
+}
+
+TEST(MeshLoaderGltf, IndexOutOfRangeRejected) {
+    TempDir dir;
+    GltfAsset a = make_gltf(5121);
+    a.bin[96 + 4] = 9;  // the fifth index (after 48 bytes of positions and 48 of normals)
+    const std::string path = write_glb(dir, "bad.glb", a);
+    std::vector<Material> materials;
+    const InputError error = expect_input_error([&] { load_gltf(path, materials, "here"); });
+    EXPECT_NE(error.message().find("index 9 out of range"), std::string::npos) << error.message();
+}
+
+TEST(MeshLoaderGltf, AccessorBeyondBufferRejected) {
+    TempDir dir;
+    GltfAsset a = make_gltf(5123);
+    a.doc["accessors"][0]["count"] = 400;
+    const std::string path = write_embedded(dir, "short.gltf", a);
+    std::vector<Material> materials;
+    const InputError error = expect_input_error([&] { load_gltf(path, materials, "here"); });
+    EXPECT_EQ(error.where(), path);
+}
+
+TEST(MeshLoaderGltf, MalformedAndMissingFilesRejected) {
+    TempDir dir;
+    const std::string path = dir.write("broken.gltf", "{ \"asset\": ");
+    std::vector<Material> materials;
+    const InputError broken = expect_input_error([&] { load_gltf(path, materials, "here"); });
+    EXPECT_EQ(broken.where(), path);
+    EXPECT_NE(broken.message().find("malformed glTF"), std::string::npos);
+
+    const InputError missing = expect_input_error(
+        [&] { load_gltf(dir.path() + "/none.glb", materials, "scene.json#/objects/0/file"); });
+    EXPECT_EQ(missing.where(), "scene.json#/objects/0/file");
+    EXPECT_NE(missing.message().find("none.glb"), std::string::npos);
+}
+
+// ---- Helpers ------------------------------------------------------------------------------
+
+TEST(MeshLoaderHelpers, MirrorTransformFlipsWindingAndNormals) {
+    TriangleMesh mesh;
+    mesh.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    mesh.normals = {Vec3(0, 0, 1), Vec3(0, 0, 1), Vec3(0, 0, 1)};
+    mesh.triangles = {{0, 1, 2}};
+    mesh.materials = {0};
+    transform_mesh(mesh, glm::scale(glm::dmat4(1.0), glm::dvec3(1, 1, -4)));
+    EXPECT_EQ(mesh.triangles[0][1], 2u);  // winding reversed
+    expect_vec3(mesh.normals[0], 0, 0, -1);
+    const Vec3 ng = glm::cross(mesh.positions[mesh.triangles[0][1]] - mesh.positions[0],
+                               mesh.positions[mesh.triangles[0][2]] - mesh.positions[0]);
+    EXPECT_GT(glm::dot(ng, mesh.normals[0]), 0.0f);  // winding agrees with the normal
+}
+
+TEST(MeshLoaderHelpers, NonUniformScaleUsesInverseTranspose) {
+    TriangleMesh mesh;
+    mesh.positions = {Vec3(0)};
+    mesh.normals = {glm::normalize(Vec3(1, 1, 0))};
+    transform_mesh(mesh, glm::scale(glm::dmat4(1.0), glm::dvec3(2, 1, 1)));
+    expect_vec3(mesh.normals[0], 1.0f / std::sqrt(5.0f), 2.0f / std::sqrt(5.0f), 0, 1e-6f);
+}
+
+TEST(MeshLoaderHelpers, VertexNormalsAreAreaWeighted) {
+    TriangleMesh mesh;
+    // Two faces at vertex 0: a big one in z = 0 (normal +z) and a small one in x = 0 (+x).
+    mesh.positions = {Vec3(0), Vec3(3, 0, 0), Vec3(0, 3, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+    mesh.triangles = {{0, 1, 2}, {0, 3, 4}};
+    compute_vertex_normals(mesh);
+    // Area vectors (0,0,9) and (1,0,0): the sum normalized.
+    expect_vec3(mesh.normals[0], 1.0f / std::sqrt(82.0f), 0, 9.0f / std::sqrt(82.0f), 1e-6f);
+    expect_vec3(mesh.normals[1], 0, 0, 1);
+}
+
+}  // namespace
+}  // namespace rayo
