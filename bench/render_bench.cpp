@@ -167,12 +167,12 @@ void RawEmbreePoint(benchmark::State& state) {
     RTCScene rtc = rtcNewScene(device);
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
     auto* points = static_cast<float*>(rtcSetNewGeometryBuffer(
-        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), scene.spheres.size()));
-    for (size_t i = 0; i < scene.spheres.size(); ++i) {
-        points[4 * i + 0] = scene.spheres[i].center.x;
-        points[4 * i + 1] = scene.spheres[i].center.y;
-        points[4 * i + 2] = scene.spheres[i].center.z;
-        points[4 * i + 3] = scene.spheres[i].radius;
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), scene.shapes.of<Sphere>().size()));
+    for (size_t i = 0; i < scene.shapes.of<Sphere>().size(); ++i) {
+        points[4 * i + 0] = scene.shapes.of<Sphere>()[i].center.x;
+        points[4 * i + 1] = scene.shapes.of<Sphere>()[i].center.y;
+        points[4 * i + 2] = scene.shapes.of<Sphere>()[i].center.z;
+        points[4 * i + 3] = scene.shapes.of<Sphere>()[i].radius;
     }
     rtcCommitGeometry(g);
     rtcAttachGeometry(rtc, g);

@@ -34,9 +34,9 @@ Scene make_scene(int count) {
     // Volume fraction ~ count·(4/3)πr³/L³; a ray of length ~L crosses ~ count·πr²/L² spheres.
     const float radius = 0.25f * kBox / std::cbrt(static_cast<float>(count)) * 0.5f;
     Scene scene;
-    scene.spheres.reserve(count);
+    scene.shapes.of<Sphere>().reserve(count);
     for (int i = 0; i < count; ++i) {
-        scene.spheres.push_back({Vec3(position(rng), position(rng), position(rng)), radius, 0});
+        scene.shapes.of<Sphere>().push_back({Vec3(position(rng), position(rng), position(rng)), radius, 0});
     }
     return scene;
 }

@@ -1,13 +1,15 @@
 #pragma once
-// The geometric scene: camera and primitives with material ids. Materials and lights live in
+// The geometric scene: camera, the analytic shapes (one vector per registered type,
+// core/shapes/registry.h) and triangle meshes, with material ids. Materials and lights live in
 // shading/ (core knows nothing of shading); the loaders fill both.
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/camera.h"
-#include "core/shapes/cone.h"
 #include "core/shapes/mesh.h"
-#include "core/shapes/sphere.h"
+#include "core/shapes/registry.h"
 
 namespace rayo {
 
@@ -16,16 +18,27 @@ namespace rayo {
 // larger sphere would silently vanish. The loaders refuse anything beyond it (docs/limits.md).
 constexpr double kMaxSceneMagnitude = 1e18;
 
+// SurfaceHit::shape of a triangle hit (the analytic shapes are 0 .. kCount − 1).
+constexpr uint32_t kTriangleShape = AnalyticShapes::kCount;
+
 struct Scene {
     CameraDesc camera;
-    std::vector<Sphere> spheres;
-    std::vector<Cone> cones;
+    Shapes shapes;
     std::vector<TriangleMesh> meshes;
 
     size_t triangle_count() const {
         size_t n = 0;
         for (const auto& m : meshes) n += m.triangle_count();
         return n;
+    }
+    // (plural name, count) of each registered shape type, in registry order: "spheres", "boxes".
+    std::vector<std::pair<std::string, size_t>> shape_counts() const {
+        std::vector<std::pair<std::string, size_t>> counts;
+        shapes.for_each([&](const auto& v) {
+            const std::string name = std::decay_t<decltype(v)>::value_type::kName;
+            counts.emplace_back(name + (name.back() == 'x' ? "es" : "s"), v.size());
+        });
+        return counts;
     }
 };
 

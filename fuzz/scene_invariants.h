@@ -44,11 +44,11 @@ inline void check_mesh(const TriangleMesh& mesh, size_t materials, const std::st
 // Checks a SceneDescription a loader returned (aborts on a violation).
 inline void check_scene(const SceneDescription& d) {
     const size_t materials = d.shading.materials.size();
-    for (const Sphere& s : d.scene.spheres) {
+    for (const Sphere& s : d.scene.shapes.of<Sphere>()) {
         expect(finite(s.center) && finite(s.radius) && s.radius > 0.0f, "sphere geometry");
         expect(s.material < materials, "sphere material id out of range");
     }
-    for (const Cone& c : d.scene.cones) {
+    for (const Cone& c : d.scene.shapes.of<Cone>()) {
         expect(finite(c.base) && finite(c.apex) && finite(c.base_radius) && finite(c.apex_radius) &&
                    c.base_radius >= 0.0f && c.apex_radius >= 0.0f,
                "cone geometry");

@@ -250,6 +250,15 @@ std::string human_count(double n) {
     return s.str();
 }
 
+// "3 spheres, 0 cones, 0 disks, 0 boxes, 12 triangles".
+std::string shape_summary(const Scene& scene) {
+    std::string text;
+    for (const auto& [name, count] : scene.shape_counts()) {
+        text += std::to_string(count) + " " + name + ", ";
+    }
+    return text + std::to_string(scene.triangle_count()) + " triangles";
+}
+
 void print_stats_table(std::ostream& out, const SceneDescription& d, const RenderResult& r,
                        double parse_s, double write_s) {
     const RayCounters& c = r.counters;
@@ -264,9 +273,8 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "  ray batches                 "
         << (r.coherent ? "coherent Embree streams per tile (camera, shadow)" : "single rays")
         << "\n"
-        << "  primitives                  " << r.primitives << " (" << d.scene.spheres.size()
-        << " spheres, " << d.scene.cones.size() << " cones, " << d.scene.triangle_count()
-        << " triangles)\n"
+        << "  primitives                  " << r.primitives << " (" << shape_summary(d.scene)
+        << ")\n"
         << "  materials, lights           " << d.shading.materials.size() << ", "
         << d.shading.lights.size() << "\n"
         << "  max depth                   " << d.settings.whitted.max_depth << "\n"
@@ -399,9 +407,9 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
     out << "scene " << d.source << "\n"
         << "resolution " << camera.width() << "x" << camera.height() << "\n"
         << "fov " << camera.hfov_degrees() << "x" << camera.vfov_degrees() << " degrees\n"
-        << "spheres " << d.scene.spheres.size() << "\n"
-        << "cones " << d.scene.cones.size() << "\n"
-        << "meshes " << d.scene.meshes.size() << "\n"
+        ;
+    for (const auto& [name, count] : d.scene.shape_counts()) out << name << " " << count << "\n";
+    out << "meshes " << d.scene.meshes.size() << "\n"
         << "triangles " << d.scene.triangle_count() << "\n"
         << "materials " << d.shading.materials.size() << "\n"
         << "lights " << d.shading.lights.size() << "\n"

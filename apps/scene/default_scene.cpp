@@ -86,10 +86,10 @@ SceneDescription make_default_scene() {
     blue.specular_model = SpecularModel::Blinn;
     const uint32_t blue_id = add_material(shading, blue);
 
-    d.scene.spheres.push_back({Vec3(-1.7f, 0.8f, -0.6f), 0.8f, red_id});
-    d.scene.spheres.push_back({Vec3(0.2f, 1.0f, -1.6f), 1.0f, mirror_id});
-    d.scene.spheres.push_back({Vec3(0.9f, 0.6f, 1.1f), 0.6f, glass_id});
-    d.scene.spheres.push_back({Vec3(-0.5f, 0.3f, 1.4f), 0.3f, red_id});
+    d.scene.shapes.of<Sphere>().push_back({Vec3(-1.7f, 0.8f, -0.6f), 0.8f, red_id});
+    d.scene.shapes.of<Sphere>().push_back({Vec3(0.2f, 1.0f, -1.6f), 1.0f, mirror_id});
+    d.scene.shapes.of<Sphere>().push_back({Vec3(0.9f, 0.6f, 1.1f), 0.6f, glass_id});
+    d.scene.shapes.of<Sphere>().push_back({Vec3(-0.5f, 0.3f, 1.4f), 0.3f, red_id});
 
     TriangleMesh ground;
     ground.name = "floor";

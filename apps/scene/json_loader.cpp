@@ -132,6 +132,15 @@ std::string join(const std::vector<std::string>& names) {
     return out;
 }
 
+// "a, b or c".
+std::string join_or(const std::vector<std::string>& names) {
+    std::string out;
+    for (size_t i = 0; i < names.size(); ++i) {
+        out += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    }
+    return out;
+}
+
 enum class Bound { Any, NonNegative, Positive };
 
 class SceneParser {
@@ -154,11 +163,15 @@ class SceneParser {
     // Unknown keys are errors: they are almost always typos of a known one.
     void check_keys(const Json& object, const std::string& pointer,
                     std::initializer_list<const char*> allowed) const {
+        check_keys(object, pointer, std::vector<std::string>(allowed.begin(), allowed.end()));
+    }
+    void check_keys(const Json& object, const std::string& pointer,
+                    const std::vector<std::string>& allowed) const {
         for (const auto& item : object.items()) {
             bool known = false;
-            for (const char* key : allowed) known |= item.key() == key;
+            for (const std::string& key : allowed) known |= item.key() == key;
             if (!known) {
-                std::vector<std::string> names(allowed.begin(), allowed.end());
+                const std::vector<std::string>& names = allowed;
                 fail(child(pointer, item.key()),
                      "unknown key \"" + item.key() + "\" (expected one of: " + join(names) + ")");
             }
@@ -266,15 +279,85 @@ class SceneParser {
 
     std::string choice(const Json& value, const std::string& pointer,
                        std::initializer_list<const char*> options) const {
+        return choice(value, pointer, std::vector<std::string>(options.begin(), options.end()));
+    }
+    std::string choice(const Json& value, const std::string& pointer,
+                       const std::vector<std::string>& options) const {
         std::vector<std::string> names;
-        for (const char* option : options) names.push_back(std::string("\"") + option + "\"");
+        for (const std::string& option : options) names.push_back("\"" + option + "\"");
         const std::string expected = "one of " + join(names);
         if (!value.is_string()) fail(pointer, "expected " + expected + ", got " + describe(value));
         const auto text = value.get<std::string>();
-        for (const char* option : options) {
+        for (const std::string& option : options) {
             if (text == option) return text;
         }
         fail(pointer, "expected " + expected + ", got " + describe(value));
+    }
+
+    // Reads a registered shape's fields (core/shapes/shape_fields.h) from a JSON object.
+    struct FieldReader {
+        const SceneParser& parser;
+        const Json& object;
+        const std::string& pointer;
+
+        static const char* expected(FieldKind kind) {
+            switch (kind) {
+                case FieldKind::Point: return "[x, y, z]";
+                case FieldKind::Direction: return "[x, y, z], non-zero";
+                case FieldKind::Number: return "a number";
+                case FieldKind::Positive: return "a number > 0";
+                case FieldKind::NonNegative: return "a number >= 0";
+            }
+            return "a value";
+        }
+        void read(const Json& value, const std::string& where, Vec3& member, FieldKind kind) {
+            member = kind == FieldKind::Direction ? parser.direction(value, where)
+                                                  : parser.vec3(value, where);
+        }
+        void read(const Json& value, const std::string& where, float& member, FieldKind kind) {
+            const Bound bound = kind == FieldKind::Positive      ? Bound::Positive
+                                : kind == FieldKind::NonNegative ? Bound::NonNegative
+                                                                 : Bound::Any;
+            member = parser.real(value, where, bound);
+        }
+        template <typename T>
+        void operator()(const char* name, T& member, FieldKind kind) {
+            read(parser.require(object, pointer, name, expected(kind)), child(pointer, name),
+                 member, kind);
+        }
+        template <typename T>
+        void optional(const char* name, T& member, FieldKind kind) {
+            if (const Json* value = parser.find(object, name)) {
+                read(*value, child(pointer, name), member, kind);
+            }
+        }
+    };
+    // The scene-file names of a shape's fields.
+    struct FieldNames {
+        std::vector<std::string> names;
+        template <typename T>
+        void operator()(const char* name, T&, FieldKind) {
+            names.push_back(name);
+        }
+        template <typename T>
+        void optional(const char* name, T&, FieldKind) {
+            names.push_back(name);
+        }
+    };
+
+    template <typename S>
+    void parse_shape(const Json& value, const std::string& pointer, std::vector<S>& out) const {
+        S shape;
+        FieldNames names{{"type", "material"}};
+        shape.fields(names);
+        check_keys(value, pointer, names.names);
+        FieldReader reader{*this, value, pointer};
+        shape.fields(reader);
+        if (const std::optional<FieldProblem> problem = shape.problem()) {
+            fail(child(pointer, problem->field), problem->message);
+        }
+        shape.material = material_of(value, pointer);
+        out.push_back(shape);
     }
 
     void parse_camera(const Json& value, const std::string& pointer, CameraDesc& camera) const;
@@ -687,37 +770,25 @@ uint32_t SceneParser::material_of(const Json& object, const std::string& pointer
 void SceneParser::parse_object(const Json& value, const std::string& pointer, SceneDescription& out,
                                TriangleMesh& polygons) {
     require_object(value, pointer, "an object");
-    const std::string type =
-        choice(require(value, pointer, "type",
-                       "\"sphere\", \"cone\", \"triangle\", \"polygon\" or \"mesh\""),
-               child(pointer, "type"), {"sphere", "cone", "triangle", "polygon", "mesh"});
-    if (type == "sphere") {  // seed 000 eq. [3]
-        check_keys(value, pointer, {"type", "center", "radius", "material"});
-        Sphere sphere;
-        sphere.center =
-            vec3(require(value, pointer, "center", "[x, y, z]"), child(pointer, "center"));
-        sphere.radius = real(require(value, pointer, "radius", "a number > 0"),
-                             child(pointer, "radius"), Bound::Positive);
-        sphere.material = material_of(value, pointer);
-        out.scene.spheres.push_back(sphere);
-    } else if (type == "cone") {
-        check_keys(value, pointer,
-                   {"type", "base", "base_radius", "apex", "apex_radius", "material"});
-        Cone cone;
-        cone.base = vec3(require(value, pointer, "base", "[x, y, z]"), child(pointer, "base"));
-        cone.base_radius = real(require(value, pointer, "base_radius", "a number >= 0"),
-                                child(pointer, "base_radius"), Bound::NonNegative);
-        cone.apex = vec3(require(value, pointer, "apex", "[x, y, z]"), child(pointer, "apex"));
-        cone.apex_radius = real(require(value, pointer, "apex_radius", "a number >= 0"),
-                                child(pointer, "apex_radius"), Bound::NonNegative);
-        if (!(glm::length(cone.apex - cone.base) > 0.0f)) {
-            fail(child(pointer, "apex"), "expected apex to differ from base");
+    // The registered shapes by name (core/shapes/registry.h), then the triangle-mesh kinds.
+    std::vector<std::string> types;
+    out.scene.shapes.for_each([&](auto& shapes) {
+        types.push_back(std::decay_t<decltype(shapes)>::value_type::kName);
+    });
+    for (const char* kind : {"triangle", "polygon", "mesh"}) types.push_back(kind);
+    std::vector<std::string> quoted;
+    for (const std::string& t : types) quoted.push_back("\"" + t + "\"");
+    const std::string type = choice(require(value, pointer, "type", join_or(quoted)),
+                                    child(pointer, "type"), types);
+    bool shape_read = false;
+    out.scene.shapes.for_each([&](auto& shapes) {
+        if (type == std::decay_t<decltype(shapes)>::value_type::kName) {
+            parse_shape(value, pointer, shapes);
+            shape_read = true;
         }
-        if (!(cone.base_radius > 0.0f || cone.apex_radius > 0.0f)) {
-            fail(child(pointer, "base_radius"), "expected base_radius or apex_radius > 0");
-        }
-        cone.material = material_of(value, pointer);
-        out.scene.cones.push_back(cone);
+    });
+    if (shape_read) {
+        return;
     } else if (type == "triangle" || type == "polygon") {
         check_keys(value, pointer, {"type", "vertices", "normals", "material"});
         const std::string vertices_pointer = child(pointer, "vertices");

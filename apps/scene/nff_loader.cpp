@@ -432,7 +432,7 @@ class NffParser {
             throw InputError(where, "sphere radius must be > 0, got " + quoted(tokens[4]));
         }
         sphere.material = current_material();
-        m_out.scene.spheres.push_back(sphere);
+        m_out.scene.shapes.of<Sphere>().push_back(sphere);
     }
 
     // `c` alone with the base and apex lines after it (the NFF specification), or all eight
@@ -490,7 +490,7 @@ class NffParser {
             throw InputError(where, "cone axis has zero length (base = apex)");
         }
         cone.material = current_material();
-        m_out.scene.cones.push_back(cone);
+        m_out.scene.shapes.of<Cone>().push_back(cone);
     }
 
     void parse_polygon(const Tokens& tokens, const Line& line, bool patch) {

@@ -29,12 +29,12 @@ void check_material_ids(const SceneDescription& d) {
                                            std::to_string(count) + " are defined");
         }
     };
-    for (size_t i = 0; i < d.scene.spheres.size(); ++i) {
-        check(d.scene.spheres[i].material, "sphere " + std::to_string(i));
-    }
-    for (size_t i = 0; i < d.scene.cones.size(); ++i) {
-        check(d.scene.cones[i].material, "cone " + std::to_string(i));
-    }
+    d.scene.shapes.for_each([&](const auto& shapes) {
+        using S = typename std::decay_t<decltype(shapes)>::value_type;
+        for (size_t i = 0; i < shapes.size(); ++i) {
+            check(shapes[i].material, std::string(S::kName) + " " + std::to_string(i));
+        }
+    });
     for (size_t m = 0; m < d.scene.meshes.size(); ++m) {
         const TriangleMesh& mesh = d.scene.meshes[m];
         if (mesh.materials.size() != mesh.triangles.size()) {

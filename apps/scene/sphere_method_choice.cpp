@@ -28,7 +28,7 @@ SphereChoice choose_sphere_method(const SceneDescription& d, const Camera& camer
         return choice;
     }
     std::ostringstream reason;
-    if (d.scene.spheres.empty()) {
+    if (d.scene.shapes.of<Sphere>().empty()) {
         choice.spheres.method = SphereMethod::User;
         choice.reason = "no spheres";
         return choice;
@@ -39,7 +39,7 @@ SphereChoice choose_sphere_method(const SceneDescription& d, const Camera& camer
     float max_magnitude = max_abs_component(camera.desc().eye);
     float largest_radius_px = 0.0f;
     float worst_float_error_px = 0.0f;
-    for (const Sphere& s : d.scene.spheres) {
+    for (const Sphere& s : d.scene.shapes.of<Sphere>()) {
         const float distance = glm::max(glm::length(s.center - camera.desc().eye), s.radius);
         max_magnitude = glm::max(max_magnitude, max_abs_component(s.center) + s.radius);
         largest_radius_px = glm::max(largest_radius_px, s.radius / distance / pixel_angle);

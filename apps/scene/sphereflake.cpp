@@ -61,8 +61,8 @@ SceneDescription make_sphereflake(int depth, int width, int height) {
                                Vec3(12, -12, -0.5f)},
                               {}, 0);
     d.scene.meshes.push_back(std::move(ground));
-    d.scene.spheres.push_back({Vec3(0.0f), 0.5f, 1});
-    add_children(d.scene.spheres, Vec3(0.0f), 0.5f, Vec3(0, 0, 1), depth, 1);
+    d.scene.shapes.of<Sphere>().push_back({Vec3(0.0f), 0.5f, 1});
+    add_children(d.scene.shapes.of<Sphere>(), Vec3(0.0f), 0.5f, Vec3(0, 0, 1), depth, 1);
 
     for (const Vec3& p : {Vec3(4, 3, 2), Vec3(1, -4, 4), Vec3(-3, 1, 5)}) {
         PointLight light;

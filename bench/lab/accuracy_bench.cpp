@@ -34,7 +34,7 @@ std::vector<uint64_t> primary_ids(const SceneDescription& d, const SphereChoice&
             SurfaceHit hit;
             const bool found = accel.intersect(camera.generate_ray(float(x), float(y)), hit);
             ids[size_t(y) * camera.width() + x] =
-                found ? (uint64_t(hit.kind) + 1) << 60 | uint64_t(hit.mesh) << 32 | hit.primitive
+                found ? (uint64_t(hit.shape) + 1) << 60 | uint64_t(hit.mesh) << 32 | hit.primitive
                       : 0;
         }
     }
@@ -58,7 +58,7 @@ SceneDescription far_cluster_scene(int size) {
     d.shading.materials.push_back(m);
     for (int i = -2; i <= 2; ++i) {
         for (int j = -2; j <= 2; ++j) {
-            d.scene.spheres.push_back({Vec3(3.0f * i, 3.0f * j, 0.0f), 1.0f, 0});
+            d.scene.shapes.of<Sphere>().push_back({Vec3(3.0f * i, 3.0f * j, 0.0f), 1.0f, 0});
         }
     }
     DirectionalLight light;
@@ -92,8 +92,8 @@ SceneDescription close_sphere_scene(int size) {
     floor.kd = Vec3(0.6f);
     floor.ka = Vec3(0.06f);
     d.shading.materials.push_back(floor);
-    d.scene.spheres.push_back({Vec3(0.0f, 1.0f, 0.0f), 1.0f, 0});
-    d.scene.spheres.push_back({Vec3(1.6f, 0.4f, 0.8f), 0.4f, 1});
+    d.scene.shapes.of<Sphere>().push_back({Vec3(0.0f, 1.0f, 0.0f), 1.0f, 0});
+    d.scene.shapes.of<Sphere>().push_back({Vec3(1.6f, 0.4f, 0.8f), 0.4f, 1});
     TriangleMesh ground;
     ground.add_convex_polygon({Vec3(-8, 0, 8), Vec3(8, 0, 8), Vec3(8, 0, -8), Vec3(-8, 0, -8)}, {},
                               2);

@@ -277,7 +277,7 @@ std::vector<StabilityRow> run_stability_case(const StabilityCase& c,
     }
 
     Scene scene;
-    scene.spheres.push_back(Sphere{center, radius, 0});
+    scene.shapes.of<Sphere>().push_back(Sphere{center, radius, 0});
     std::vector<StabilityRow> rows;
     for (const StudyMethod& m : methods) {
         std::unique_ptr<Accel> accel;
@@ -554,7 +554,7 @@ OffsetRow run_offset_case(const OffsetCase& c, const OffsetFunction& scaled) {
     Scene scene;
     const Vec3 center = narrow(study_center(c.center_magnitude));
     const auto radius = static_cast<float>(c.radius);
-    scene.spheres.push_back(Sphere{center, radius, 0});
+    scene.shapes.of<Sphere>().push_back(Sphere{center, radius, 0});
     const Accel accel(scene, offset_accel_options(c.math));
     return run_offset_case_with(c, accel, center, radius, scaled);
 }
@@ -567,7 +567,7 @@ std::vector<OffsetRow> run_offset_sweep(const OffsetConfig& c, const OffsetFunct
             // One Accel per sphere, shared by its configurations.
             Scene scene;
             const Vec3 center = narrow(study_center(magnitude));
-            scene.spheres.push_back(Sphere{center, static_cast<float>(radius), 0});
+            scene.shapes.of<Sphere>().push_back(Sphere{center, static_cast<float>(radius), 0});
             const Accel accel(scene, offset_accel_options(c.math));
             for (double distance : c.distance_ratios) {
                 const uint32_t seed = c.seed + 7919u * index++;

@@ -1,6 +1,7 @@
 #include "core/shapes/cone.h"
 
 #include <cmath>
+#include <limits>
 
 namespace rayo {
 
@@ -77,6 +78,67 @@ bool intersect_cone(const ConeFrame& cone, const Vec3& origin, const Vec3& direc
         return true;
     }
     return false;
+}
+
+ConeFrame Cone::intersector() const { return make_cone_frame(*this); }
+
+std::optional<FieldProblem> Cone::problem() const {
+    if (!(glm::length(apex - base) > 0.0f)) {
+        return FieldProblem{"apex", "expected apex to differ from base"};
+    }
+    if (!(base_radius > 0.0f || apex_radius > 0.0f)) {
+        return FieldProblem{"base_radius", "expected base_radius or apex_radius > 0"};
+    }
+    return std::nullopt;
+}
+
+Bounds3 Cone::bounds() const {
+    Bounds3 b;
+    cone_bounds(*this, b.lower, b.upper);
+    return b;
+}
+
+bool ConeFrame::nearest(const Vec3& origin, const Vec3& direction, float tnear, float tfar,
+                        ShapeHit& hit) const {
+    return intersect_cone(*this, origin, direction, tnear, tfar, hit.t, hit.normal);
+}
+
+int ConeFrame::crossings(const Vec3& origin, const Vec3& direction,
+                         ShapeCrossing out[kMaxShapeCrossings]) const {
+    // Walk the hits along the line: each crossing found becomes the window's new start.
+    int count = 0;
+    float tnear = -std::numeric_limits<float>::max();
+    float t;
+    Vec3 normal;
+    while (count < kMaxShapeCrossings &&
+           intersect_cone(*this, origin, direction, tnear, std::numeric_limits<float>::max(), t,
+                          normal)) {
+        out[count++] = {t, glm::dot(direction, normal) < 0.0f};
+        tnear = t;
+    }
+    return count;
+}
+
+void Cone::surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const {
+    out.position = ray.at(hit.t);
+    out.geometric_normal = glm::normalize(hit.normal);
+    out.shading_normal = out.geometric_normal;
+    out.object_size = glm::max(glm::length(apex - base), glm::max(base_radius, apex_radius));
+}
+
+void Cone::parameterization(const Vec3& position, SurfaceHit& out) const {
+    // u: the angle around the axis from a fixed perpendicular, v: the axial fraction base -> apex;
+    // ∂p/∂u = 2π·r(v)·(the tangent of the circle).
+    const Vec3 axis = glm::normalize(apex - base);
+    const Vec3 helper = std::abs(axis.x) < 0.9f ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+    const Vec3 e1 = glm::normalize(glm::cross(axis, helper)), e2 = glm::cross(axis, e1);
+    const Vec3 w = position - base;
+    const float height = glm::length(apex - base);
+    const float v = glm::dot(w, axis) / height;
+    const float angle = std::atan2(glm::dot(w, e2), glm::dot(w, e1));
+    const float radius = base_radius + v * (apex_radius - base_radius);
+    out.uv = glm::vec2(0.5f + angle / (2.0f * kPi), v);
+    out.dpdu = 2.0f * kPi * radius * (std::cos(angle) * e2 - std::sin(angle) * e1);
 }
 
 }  // namespace rayo

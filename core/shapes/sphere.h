@@ -11,17 +11,39 @@
 // starts inside: seed 000 hits at t1 and flips the normal).
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <optional>
 
 #include "core/math.h"
+#include "core/shapes/shape.h"
+#include "core/shapes/shape_fields.h"
 
 namespace rayo {
 
 enum class SphereMath { Seed, Stable, Double };
 
+// A sphere (seed 000 eq. [3]): a Shape (core/shapes/shape.h); the math of its nearest() is a
+// template parameter so that each Embree callback runs one form without a per-ray switch.
 struct Sphere {
     Vec3 center{0.0f};
     float radius = 1.0f;
     uint32_t material = 0;
+
+    static constexpr const char* kName = "sphere";
+    template <typename F>
+    void fields(F& f) {
+        f("center", center, FieldKind::Point);
+        f("radius", radius, FieldKind::Positive);
+    }
+    std::optional<FieldProblem> problem() const { return std::nullopt; }
+    Bounds3 bounds() const { return {center - Vec3(radius), center + Vec3(radius)}; }
+    int crossings(const Vec3& origin, const Vec3& direction,
+                  ShapeCrossing out[kMaxShapeCrossings]) const;
+    template <SphereMath kMath = SphereMath::Stable>
+    bool nearest(const Vec3& origin, const Vec3& direction, float tnear, float tfar,
+                 ShapeHit& hit) const;
+    void surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const;
+    void parameterization(const Vec3& position, SurfaceHit& out) const;
 };
 
 // `direction` must be unit length. Returns true and fills `hit` for the nearest root in
@@ -51,10 +73,10 @@ bool intersect_sphere_seed(const glm::vec<3, T>& origin, const glm::vec<3, T>& d
     return false;
 }
 
+// Both roots t0 <= t1 of the stable form; false when the line misses (or only touches).
 template <typename T>
-bool intersect_sphere_stable(const glm::vec<3, T>& origin, const glm::vec<3, T>& direction,
-                             const glm::vec<3, T>& center, T radius, T tnear, T tfar, T& t_out,
-                             bool& far_root) {
+bool sphere_roots_stable(const glm::vec<3, T>& origin, const glm::vec<3, T>& direction,
+                         const glm::vec<3, T>& center, T radius, T& t0, T& t1) {
     const glm::vec<3, T> f = origin - center;
     const T b = glm::dot(f, direction);
     const glm::vec<3, T> perpendicular = f - b * direction;
@@ -64,8 +86,18 @@ bool intersect_sphere_stable(const glm::vec<3, T>& origin, const glm::vec<3, T>&
     const T c = (length_f - radius) * (length_f + radius);
     const T q = -(b + std::copysign(std::sqrt(discriminant), b));
     // Roots of t² + 2bt + c = 0 are q and c/q (Vieta); q != 0 because discriminant > 0.
-    T t0 = c / q, t1 = q;
+    t0 = c / q;
+    t1 = q;
     if (t0 > t1) std::swap(t0, t1);
+    return true;
+}
+
+template <typename T>
+bool intersect_sphere_stable(const glm::vec<3, T>& origin, const glm::vec<3, T>& direction,
+                             const glm::vec<3, T>& center, T radius, T tnear, T tfar, T& t_out,
+                             bool& far_root) {
+    T t0, t1;
+    if (!sphere_roots_stable(origin, direction, center, radius, t0, t1)) return false;
     if (t0 > tnear && t0 < tfar) {
         t_out = t0;
         far_root = false;
@@ -113,6 +145,19 @@ glm::vec<3, T> sphere_normal(const glm::vec<3, T>& point, const glm::vec<3, T>& 
                              bool far_root) {
     const glm::vec<3, T> n = (point - center) / radius;
     return far_root ? -n : n;
+}
+
+template <SphereMath kMath>
+bool Sphere::nearest(const Vec3& origin, const Vec3& direction, float tnear, float tfar,
+                     ShapeHit& hit) const {
+    bool far_root;
+    if (!intersect_sphere(kMath, origin, direction, center, radius, tnear, tfar, hit.t, far_root)) {
+        return false;
+    }
+    // Outward; the integrator tells inside from outside by its sign against the ray
+    // (equivalent to seed 000's flip for far-root hits).
+    hit.normal = origin + hit.t * direction - center;
+    return true;
 }
 
 }  // namespace rayo

@@ -56,7 +56,7 @@ Scene sphere_scene() {
                             Vec3(2, -3, -2),    Vec3(0, 4, -3),      Vec3(-2.5f, -2, 3),
                             Vec3(0.3f, 0.2f, 5)};
     const float radii[] = {1.0f, 0.8f, 1.5f, 0.5f, 2.0f, 0.25f, 0.05f};
-    for (uint32_t i = 0; i < 7; ++i) scene.spheres.push_back(Sphere{centers[i], radii[i], i});
+    for (uint32_t i = 0; i < 7; ++i) scene.shapes.of<Sphere>().push_back(Sphere{centers[i], radii[i], i});
     return scene;
 }
 
@@ -65,7 +65,7 @@ Scene sphere_scene() {
 std::vector<Ray> random_rays(const Scene& scene, int count, uint32_t seed) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> box(-8.0f, 8.0f), unit(-1.0f, 1.0f);
-    std::uniform_int_distribution<size_t> pick(0, scene.spheres.size() - 1);
+    std::uniform_int_distribution<size_t> pick(0, scene.shapes.of<Sphere>().size() - 1);
     auto random_unit = [&] {
         for (;;) {
             const Vec3 v(unit(rng), unit(rng), unit(rng));
@@ -78,7 +78,7 @@ std::vector<Ray> random_rays(const Scene& scene, int count, uint32_t seed) {
         Ray ray;
         ray.origin = Vec3(box(rng), box(rng), box(rng));
         if (i % 2 == 0) {
-            const Sphere& s = scene.spheres[pick(rng)];
+            const Sphere& s = scene.shapes.of<Sphere>()[pick(rng)];
             const Vec3 target = s.center + 1.2f * s.radius * random_unit();
             const Vec3 d = target - ray.origin;
             ray.direction = glm::length(d) > 1e-3f ? glm::normalize(d) : random_unit();
@@ -104,7 +104,7 @@ SphereComparison compare_spheres(SphereMath math, int count, uint32_t seed) {
     SphereComparison c;
     for (const Ray& ray : random_rays(scene, count, seed)) {
         float t_ref = 0.0f;
-        const int ref = brute_force_sphere(scene.spheres, math, ray, t_ref);
+        const int ref = brute_force_sphere(scene.shapes.of<Sphere>(), math, ray, t_ref);
         SurfaceHit hit;
         const bool got = accel.intersect(ray, hit);
         c.rays++;
@@ -155,7 +155,7 @@ TEST(AccelSpheres, SeedFormMatchesDirectCallsOnRandomRays) {
 
 TEST(AccelSpheres, HitRecordDescribesTheSphere) {
     Scene scene;
-    scene.spheres.push_back(Sphere{Vec3(0.0f, 0.0f, -10.0f), 2.0f, 5});
+    scene.shapes.of<Sphere>().push_back(Sphere{Vec3(0.0f, 0.0f, -10.0f), 2.0f, 5});
     const Accel accel(scene);
     EXPECT_EQ(accel.primitive_count(), 1u);
     Ray ray;
@@ -169,11 +169,11 @@ TEST(AccelSpheres, HitRecordDescribesTheSphere) {
     expect_vec_near(hit.position, Vec3(0.0f, 1.0f, -10.0f + std::sqrt(3.0f)), 1e-5f);
     expect_vec_near(hit.geometric_normal, Vec3(0.0f, 0.5f, std::sqrt(0.75f)), 1e-6f);
     expect_vec_near(hit.shading_normal, hit.geometric_normal, 0.0f);
-    EXPECT_EQ(hit.kind, PrimitiveKind::Sphere);
+    EXPECT_EQ(hit.shape, Shapes::index_of<Sphere>());
     EXPECT_EQ(hit.material, 5u);
     EXPECT_EQ(hit.object_size, 2.0f);
     // Re-projected onto the sphere.
-    EXPECT_NEAR(glm::length(hit.position - scene.spheres[0].center), 2.0f, 1e-6f);
+    EXPECT_NEAR(glm::length(hit.position - scene.shapes.of<Sphere>()[0].center), 2.0f, 1e-6f);
     // From inside: the far wall, normal still outward (the integrator flips by the ray side).
     ray.origin = Vec3(0.0f, 0.0f, -10.0f);
     ASSERT_TRUE(accel.intersect(ray, hit));
@@ -238,7 +238,7 @@ TEST(AccelTriangles, HitAtKnownDistanceWithInterpolatedNormal) {
         ASSERT_TRUE(accel.intersect(ray, hit));
         EXPECT_NEAR(hit.t, 5.0f, 1e-6f);
         expect_vec_near(hit.position, p, 1e-6f);
-        EXPECT_EQ(hit.kind, PrimitiveKind::Triangle);
+        EXPECT_EQ(hit.shape, kTriangleShape);
         EXPECT_EQ(hit.material, 3u);
         // Counter-clockwise from +z: Ng = +z.
         expect_vec_near(hit.geometric_normal, Vec3(0.0f, 0.0f, 1.0f), 1e-6f);
@@ -336,7 +336,7 @@ TEST(AccelTriangles, OneSidedMeshDoesNotHideWhatIsBehindIt) {
     for (bool one_sided : {true, false}) {
         Scene scene;
         scene.meshes.push_back(square_mesh(false, one_sided));
-        scene.spheres.push_back(Sphere{Vec3(0.0f, 0.0f, 3.0f), 1.0f, 9});
+        scene.shapes.of<Sphere>().push_back(Sphere{Vec3(0.0f, 0.0f, 3.0f), 1.0f, 9});
         const Accel accel(scene);
         Ray ray;
         ray.origin = Vec3(0.0f, 0.0f, -2.0f);
@@ -344,10 +344,10 @@ TEST(AccelTriangles, OneSidedMeshDoesNotHideWhatIsBehindIt) {
         SurfaceHit hit;
         ASSERT_TRUE(accel.intersect(ray, hit));
         if (one_sided) {
-            EXPECT_EQ(hit.kind, PrimitiveKind::Sphere);
+            EXPECT_EQ(hit.shape, Shapes::index_of<Sphere>());
             EXPECT_NEAR(hit.t, 4.0f, 1e-6f);
         } else {
-            EXPECT_EQ(hit.kind, PrimitiveKind::Triangle);
+            EXPECT_EQ(hit.shape, kTriangleShape);
             EXPECT_NEAR(hit.t, 2.0f, 1e-6f);
         }
     }
@@ -355,9 +355,9 @@ TEST(AccelTriangles, OneSidedMeshDoesNotHideWhatIsBehindIt) {
 
 TEST(AccelCones, AgreeWithDirectCalls) {
     Scene scene;
-    scene.cones.push_back(Cone{Vec3(0, -1, 0), 1.0f, Vec3(0, 2, 0), 1.0f, 0});   // cylinder
-    scene.cones.push_back(Cone{Vec3(3, 0, 0), 1.0f, Vec3(3, 2, 0), 0.0f, 1});    // pointed
-    scene.cones.push_back(Cone{Vec3(-3, 0, 1), 0.5f, Vec3(-1, 1, 3), 1.5f, 2});  // tilted
+    scene.shapes.of<Cone>().push_back(Cone{Vec3(0, -1, 0), 1.0f, Vec3(0, 2, 0), 1.0f, 0});   // cylinder
+    scene.shapes.of<Cone>().push_back(Cone{Vec3(3, 0, 0), 1.0f, Vec3(3, 2, 0), 0.0f, 1});    // pointed
+    scene.shapes.of<Cone>().push_back(Cone{Vec3(-3, 0, 1), 0.5f, Vec3(-1, 1, 3), 1.5f, 2});  // tilted
     const Accel accel(scene);
     EXPECT_EQ(accel.primitive_count(), 3u);
     std::mt19937 rng(5);
@@ -366,7 +366,7 @@ TEST(AccelCones, AgreeWithDirectCalls) {
         occluded_mismatches = 0;
     for (int i = 0; i < 20000; ++i) {
         const Vec3 origin(box(rng), box(rng), box(rng));
-        const Cone& aim = scene.cones[i % 3];
+        const Cone& aim = scene.shapes.of<Cone>()[i % 3];
         const Vec3 target =
             0.5f * (aim.base + aim.apex) + 1.5f * Vec3(unit(rng), unit(rng), unit(rng));
         Ray ray;
@@ -376,8 +376,8 @@ TEST(AccelCones, AgreeWithDirectCalls) {
         float tfar = ray.tfar, t;
         Vec3 n, n_ref(0.0f);
         int ref = -1;
-        for (size_t k = 0; k < scene.cones.size(); ++k) {
-            if (intersect_cone(scene.cones[k], ray.origin, ray.direction, ray.tnear, tfar, t, n)) {
+        for (size_t k = 0; k < scene.shapes.of<Cone>().size(); ++k) {
+            if (intersect_cone(scene.shapes.of<Cone>()[k], ray.origin, ray.direction, ray.tnear, tfar, t, n)) {
                 tfar = t;
                 n_ref = n;
                 ref = int(k);
@@ -392,7 +392,7 @@ TEST(AccelCones, AgreeWithDirectCalls) {
         }
         if (!got) continue;
         hits++;
-        EXPECT_EQ(hit.kind, PrimitiveKind::Cone);
+        EXPECT_EQ(hit.shape, Shapes::index_of<Cone>());
         EXPECT_EQ(hit.material, uint32_t(ref));
         t_mismatches += hit.t != tfar;
         normal_mismatches += glm::length(hit.geometric_normal - n_ref) > 1e-6f;
@@ -410,11 +410,11 @@ TEST(AccelMixed, NearestPrimitiveWins) {
     // from +z, t = 7), a cylinder along x at z = 6 of radius 0.5 (front at z = 6.5, t = 3.5).
     // Removing each in turn exposes the next.
     Scene scene;
-    scene.spheres.push_back(Sphere{Vec3(0.0f), 1.0f, 0});
+    scene.shapes.of<Sphere>().push_back(Sphere{Vec3(0.0f), 1.0f, 0});
     TriangleMesh square = square_mesh(false, true);
     for (Vec3& p : square.positions) p.z = 3.0f;
     scene.meshes.push_back(square);
-    scene.cones.push_back(Cone{Vec3(-2, 0, 6), 0.5f, Vec3(2, 0, 6), 0.5f, 2});
+    scene.shapes.of<Cone>().push_back(Cone{Vec3(-2, 0, 6), 0.5f, Vec3(2, 0, 6), 0.5f, 2});
     Ray ray;
     ray.origin = Vec3(0.0f, 0.0f, 10.0f);
     ray.direction = Vec3(0.0f, 0.0f, -1.0f);
@@ -422,7 +422,7 @@ TEST(AccelMixed, NearestPrimitiveWins) {
         const Accel accel(scene);
         SurfaceHit hit;
         ASSERT_TRUE(accel.intersect(ray, hit));
-        EXPECT_EQ(hit.kind, PrimitiveKind::Cone);
+        EXPECT_EQ(hit.shape, Shapes::index_of<Cone>());
         EXPECT_NEAR(hit.t, 3.5f, 1e-6f);
         expect_vec_near(hit.geometric_normal, Vec3(0.0f, 0.0f, 1.0f), 1e-6f);
         // A window ending before the cone sees nothing; starting after it sees the square.
@@ -433,15 +433,15 @@ TEST(AccelMixed, NearestPrimitiveWins) {
         shadow.tnear = 5.0f;
         shadow.tfar = kInf;
         ASSERT_TRUE(accel.intersect(shadow, hit));
-        EXPECT_EQ(hit.kind, PrimitiveKind::Triangle);
+        EXPECT_EQ(hit.shape, kTriangleShape);
         EXPECT_NEAR(hit.t, 7.0f, 1e-6f);
     }
-    scene.cones.clear();
+    scene.shapes.of<Cone>().clear();
     {
         const Accel accel(scene);
         SurfaceHit hit;
         ASSERT_TRUE(accel.intersect(ray, hit));
-        EXPECT_EQ(hit.kind, PrimitiveKind::Triangle);
+        EXPECT_EQ(hit.shape, kTriangleShape);
         EXPECT_NEAR(hit.t, 7.0f, 1e-6f);
     }
     scene.meshes.clear();
@@ -449,7 +449,7 @@ TEST(AccelMixed, NearestPrimitiveWins) {
         const Accel accel(scene);
         SurfaceHit hit;
         ASSERT_TRUE(accel.intersect(ray, hit));
-        EXPECT_EQ(hit.kind, PrimitiveKind::Sphere);
+        EXPECT_EQ(hit.shape, Shapes::index_of<Sphere>());
         EXPECT_NEAR(hit.t, 9.0f, 1e-6f);
     }
 }

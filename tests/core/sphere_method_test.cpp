@@ -62,7 +62,7 @@ Scene random_spheres(int count, uint32_t seed) {
     std::uniform_real_distribution<float> position(-10.0f, 10.0f), radius(0.2f, 1.5f);
     Scene scene;
     for (int i = 0; i < count; ++i) {
-        scene.spheres.push_back({Vec3(position(rng), position(rng), position(rng)), radius(rng),
+        scene.shapes.of<Sphere>().push_back({Vec3(position(rng), position(rng), position(rng)), radius(rng),
                                  static_cast<uint32_t>(i)});
     }
     return scene;
@@ -146,7 +146,7 @@ TEST(SphereMethods, MeshConvergesToTheSphereWithLevel) {
             // Radial depth of the mesh hit below the true surface, in radii: the inscribed
             // icosphere lies inside the sphere by at most the facet sagitta.
             if (ha) {
-                const Sphere& s = scene.spheres[a.material];
+                const Sphere& s = scene.shapes.of<Sphere>()[a.material];
                 max_error = std::max(
                     max_error, 1.0 - double(glm::length(b.position - s.center)) / s.radius);
             }
@@ -213,14 +213,14 @@ TEST(SphereMethods, SphereBelowOneUlpOfItsPositionGivesFiniteHits) {
     // Radius 1e-3 at x = 1e5, where floats are 0.0078 apart: a ray along x hits it, and the hit
     // point o + t·d rounds onto the centre. The hit must still be finite (it faces the ray).
     Scene scene;
-    scene.spheres.push_back({Vec3(1e5f, 0.0f, 0.0f), 1e-3f, 0});
+    scene.shapes.of<Sphere>().push_back({Vec3(1e5f, 0.0f, 0.0f), 1e-3f, 0});
     const Accel accel(scene, options_for("user"));
     Ray ray;
     ray.origin = Vec3(1e5f + 16.0f, 0.0f, 0.0f);
     ray.direction = Vec3(-1.0f, 0.0f, 0.0f);
     SurfaceHit hit;
     ASSERT_TRUE(accel.intersect(ray, hit));
-    ASSERT_EQ(ray.at(hit.t), scene.spheres[0].center);  // the degenerate case, really
+    ASSERT_EQ(ray.at(hit.t), scene.shapes.of<Sphere>()[0].center);  // the degenerate case, really
     for (int a = 0; a < 3; ++a) {
         EXPECT_TRUE(std::isfinite(hit.position[a]));
         EXPECT_TRUE(std::isfinite(hit.geometric_normal[a]));

@@ -44,7 +44,7 @@ TEST(AccuracyStudy, FarSceneSeparatesSeedFromStable) {
     for (auto& [name, scene] : accuracy_scenes(128)) {
         if (name == "far") far = scene;
     }
-    ASSERT_FALSE(far.scene.spheres.empty());
+    ASSERT_FALSE(far.scene.shapes.of<Sphere>().empty());
     far.settings.spheres = *parse_sphere_method("bruteforce");
     far.settings.sphere_math = SphereMath::Double;
     const RenderResult reference = render_scene(far, 0, false);

@@ -155,16 +155,16 @@ TEST(JsonLoaderFull, EveryFieldParsedToExactValues) {
     expect_vec3(sun.color, 0.5f, 0.5f, 0.5f);
     EXPECT_EQ(sun.intensity, 3.0f);
 
-    ASSERT_EQ(d.scene.spheres.size(), 1u);
-    expect_vec3(d.scene.spheres[0].center, 1, 2, 3);
-    EXPECT_EQ(d.scene.spheres[0].radius, 0.5f);
-    EXPECT_EQ(d.scene.spheres[0].material, 1u);
-    ASSERT_EQ(d.scene.cones.size(), 1u);
-    expect_vec3(d.scene.cones[0].base, 0, 0, 0);
-    EXPECT_EQ(d.scene.cones[0].base_radius, 1.0f);
-    expect_vec3(d.scene.cones[0].apex, 0, 2, 0);
-    EXPECT_EQ(d.scene.cones[0].apex_radius, 0.25f);
-    EXPECT_EQ(d.scene.cones[0].material, 0u);
+    ASSERT_EQ(d.scene.shapes.of<Sphere>().size(), 1u);
+    expect_vec3(d.scene.shapes.of<Sphere>()[0].center, 1, 2, 3);
+    EXPECT_EQ(d.scene.shapes.of<Sphere>()[0].radius, 0.5f);
+    EXPECT_EQ(d.scene.shapes.of<Sphere>()[0].material, 1u);
+    ASSERT_EQ(d.scene.shapes.of<Cone>().size(), 1u);
+    expect_vec3(d.scene.shapes.of<Cone>()[0].base, 0, 0, 0);
+    EXPECT_EQ(d.scene.shapes.of<Cone>()[0].base_radius, 1.0f);
+    expect_vec3(d.scene.shapes.of<Cone>()[0].apex, 0, 2, 0);
+    EXPECT_EQ(d.scene.shapes.of<Cone>()[0].apex_radius, 0.25f);
+    EXPECT_EQ(d.scene.shapes.of<Cone>()[0].material, 0u);
 
     // The triangle and the quad (two triangles) share one mesh.
     ASSERT_EQ(d.scene.meshes.size(), 1u);
@@ -200,7 +200,7 @@ TEST(JsonLoaderDefaults, MinimalSceneGetsDocumentedDefaults) {
     EXPECT_EQ(d.shading.materials[0].name, "default");
     expect_vec3(d.shading.materials[0].kd, 0.8f, 0.8f, 0.8f);
     EXPECT_TRUE(d.shading.lights.empty());
-    EXPECT_TRUE(d.scene.spheres.empty());
+    EXPECT_TRUE(d.scene.shapes.of<Sphere>().empty());
     EXPECT_TRUE(d.scene.meshes.empty());
 }
 
@@ -223,7 +223,7 @@ TEST(JsonLoaderDefaults, MaterialAndLightDefaults) {
     expect_vec3(point.color, 1, 1, 1);
     const auto& sun = std::get<DirectionalLight>(d.shading.lights[1]);
     expect_vec3(sun.direction, 0.6f, 0, 0.8f, 1e-7f);
-    EXPECT_EQ(d.scene.spheres.at(0).material, 0u);  // no material: "default"
+    EXPECT_EQ(d.scene.shapes.of<Sphere>().at(0).material, 0u);  // no material: "default"
 }
 
 TEST(JsonLoaderComments, LineAndBlockCommentsAccepted) {
@@ -232,8 +232,8 @@ TEST(JsonLoaderComments, LineAndBlockCommentsAccepted) {
       "rayo": 1, /* version */
       "objects": [ { "type": "sphere", "center": [0, 0, 0], "radius": 2 } ] // one sphere
     })");
-    ASSERT_EQ(d.scene.spheres.size(), 1u);
-    EXPECT_EQ(d.scene.spheres[0].radius, 2.0f);
+    ASSERT_EQ(d.scene.shapes.of<Sphere>().size(), 1u);
+    EXPECT_EQ(d.scene.shapes.of<Sphere>()[0].radius, 2.0f);
 }
 
 struct ErrorCase {
@@ -461,7 +461,7 @@ TEST(JsonLoaderExamples, AllScenesLoad) {
         SceneDescription d;
         ASSERT_NO_THROW(d = load_json_file(entry.path().string()));
         EXPECT_FALSE(d.shading.lights.empty());
-        EXPECT_GT(d.scene.spheres.size() + d.scene.cones.size() + d.scene.triangle_count(), 0u);
+        EXPECT_GT(d.scene.shapes.of<Sphere>().size() + d.scene.shapes.of<Cone>().size() + d.scene.triangle_count(), 0u);
         EXPECT_EQ(d.scene.camera.width, 320);
         EXPECT_EQ(d.scene.camera.height, 240);
         ++count;

@@ -117,8 +117,8 @@ const std::string kEveryEntity = lines({
 TEST(NffLoader, EveryEntityCounts) {
     const SceneDescription d = load_nff_string(kEveryEntity, "every.nff");
     EXPECT_EQ(d.source, "every.nff");
-    EXPECT_EQ(d.scene.spheres.size(), 2u);
-    EXPECT_EQ(d.scene.cones.size(), 2u);
+    EXPECT_EQ(d.scene.shapes.of<Sphere>().size(), 2u);
+    EXPECT_EQ(d.scene.shapes.of<Cone>().size(), 2u);
     ASSERT_EQ(d.scene.meshes.size(), 3u);
     EXPECT_EQ(d.scene.triangle_count(), 1u + 2u + 1u);
     EXPECT_EQ(d.shading.materials.size(), 2u);
@@ -154,10 +154,10 @@ TEST(NffLoader, MaterialsFollowReferenceConventions) {
     EXPECT_TRUE(glass.transmissive());
 
     // Objects carry the material of the `f` before them.
-    EXPECT_EQ(d.scene.spheres[0].material, 0u);
-    EXPECT_EQ(d.scene.cones[0].material, 0u);
-    EXPECT_EQ(d.scene.cones[1].material, 0u);
-    EXPECT_EQ(d.scene.spheres[1].material, 1u);
+    EXPECT_EQ(d.scene.shapes.of<Sphere>()[0].material, 0u);
+    EXPECT_EQ(d.scene.shapes.of<Cone>()[0].material, 0u);
+    EXPECT_EQ(d.scene.shapes.of<Cone>()[1].material, 0u);
+    EXPECT_EQ(d.scene.shapes.of<Sphere>()[1].material, 1u);
 }
 
 TEST(NffLoader, LightsArePointLightsWithOptionalColour) {
@@ -202,20 +202,20 @@ TEST(NffLoader, CameraFromViewBlock) {
 
 TEST(NffLoader, SphereGeometry) {
     const SceneDescription d = load_nff_string(kEveryEntity, "every.nff");
-    expect_vec3(d.scene.spheres[0].center, 0.0f, 0.0f, 0.0f);
-    EXPECT_FLOAT_EQ(d.scene.spheres[0].radius, 1.5f);
-    expect_vec3(d.scene.spheres[1].center, 5.0f, 5.0f, 5.0f);
-    EXPECT_FLOAT_EQ(d.scene.spheres[1].radius, 0.5f);
+    expect_vec3(d.scene.shapes.of<Sphere>()[0].center, 0.0f, 0.0f, 0.0f);
+    EXPECT_FLOAT_EQ(d.scene.shapes.of<Sphere>()[0].radius, 1.5f);
+    expect_vec3(d.scene.shapes.of<Sphere>()[1].center, 5.0f, 5.0f, 5.0f);
+    EXPECT_FLOAT_EQ(d.scene.shapes.of<Sphere>()[1].radius, 0.5f);
 }
 
 TEST(NffLoader, ConeGeometryInBothForms) {
     const SceneDescription d = load_nff_string(kEveryEntity, "every.nff");
-    const Cone& two_line = d.scene.cones[0];  // `c` then base and apex lines
+    const Cone& two_line = d.scene.shapes.of<Cone>()[0];  // `c` then base and apex lines
     expect_vec3(two_line.base, 0.0f, 0.0f, 0.0f);
     EXPECT_FLOAT_EQ(two_line.base_radius, 0.5f);
     expect_vec3(two_line.apex, 0.0f, 0.0f, 2.0f);
     EXPECT_FLOAT_EQ(two_line.apex_radius, 0.25f);
-    const Cone& one_line = d.scene.cones[1];  // all on the `c` line, as the SPD files write it
+    const Cone& one_line = d.scene.shapes.of<Cone>()[1];  // all on the `c` line, as the SPD files write it
     expect_vec3(one_line.base, 1.0f, 1.0f, 1.0f);
     EXPECT_FLOAT_EQ(one_line.base_radius, 0.3f);
     expect_vec3(one_line.apex, 1.0f, 1.0f, 3.0f);
@@ -278,13 +278,13 @@ TEST(NffLoader, NumberForms) {
     const SceneDescription d = load_nff_string(
         kView + lines({"f 1 1 1 1 0 1 0 1", "s 1.11022e-16 -.5 +2 1E-1", "s 3. -0 5e0 .25"}),
         "numbers.nff");
-    ASSERT_EQ(d.scene.spheres.size(), 2u);
-    EXPECT_FLOAT_EQ(d.scene.spheres[0].center.x, 1.11022e-16f);
-    EXPECT_FLOAT_EQ(d.scene.spheres[0].center.y, -0.5f);
-    EXPECT_FLOAT_EQ(d.scene.spheres[0].center.z, 2.0f);
-    EXPECT_FLOAT_EQ(d.scene.spheres[0].radius, 0.1f);
-    expect_vec3(d.scene.spheres[1].center, 3.0f, 0.0f, 5.0f);
-    EXPECT_FLOAT_EQ(d.scene.spheres[1].radius, 0.25f);
+    ASSERT_EQ(d.scene.shapes.of<Sphere>().size(), 2u);
+    EXPECT_FLOAT_EQ(d.scene.shapes.of<Sphere>()[0].center.x, 1.11022e-16f);
+    EXPECT_FLOAT_EQ(d.scene.shapes.of<Sphere>()[0].center.y, -0.5f);
+    EXPECT_FLOAT_EQ(d.scene.shapes.of<Sphere>()[0].center.z, 2.0f);
+    EXPECT_FLOAT_EQ(d.scene.shapes.of<Sphere>()[0].radius, 0.1f);
+    expect_vec3(d.scene.shapes.of<Sphere>()[1].center, 3.0f, 0.0f, 5.0f);
+    EXPECT_FLOAT_EQ(d.scene.shapes.of<Sphere>()[1].radius, 0.25f);
 }
 
 TEST(NffLoader, CrlfTabsAndViewLinesInAnyOrder) {
@@ -296,7 +296,7 @@ TEST(NffLoader, CrlfTabsAndViewLinesInAnyOrder) {
     EXPECT_EQ(d.scene.camera.height, 20);
     expect_vec3(d.scene.camera.eye, 0.0f, 0.0f, 9.0f);
     EXPECT_FLOAT_EQ(*d.scene.camera.vfov_degrees, 30.0f);
-    EXPECT_EQ(d.scene.spheres.size(), 1u);
+    EXPECT_EQ(d.scene.shapes.of<Sphere>().size(), 1u);
 }
 
 TEST(NffLoader, DefaultMaterialBeforeAnyF) {
@@ -310,8 +310,8 @@ TEST(NffLoader, DefaultMaterialBeforeAnyF) {
     expect_vec3(fallback.ks, 0.0f, 0.0f, 0.0f);
     expect_vec3(fallback.reflect, 0.0f, 0.0f, 0.0f);
     expect_vec3(fallback.transmit, 0.0f, 0.0f, 0.0f);
-    EXPECT_EQ(d.scene.spheres[0].material, 0u);
-    EXPECT_EQ(d.scene.spheres[1].material, 1u);
+    EXPECT_EQ(d.scene.shapes.of<Sphere>()[0].material, 0u);
+    EXPECT_EQ(d.scene.shapes.of<Sphere>()[1].material, 1u);
     expect_vec3(d.shading.materials[1].kd, 0.5f, 0.0f, 0.0f);
 }
 
@@ -323,11 +323,11 @@ TEST(NffLoader, ConsecutiveIdenticalFShareOneMaterial) {
     ASSERT_EQ(d.shading.materials.size(), 3u);
     EXPECT_EQ(d.shading.materials[0].name, "f line 8");
     EXPECT_EQ(d.shading.materials[2].name, "f line 14");
-    ASSERT_EQ(d.scene.spheres.size(), 4u);
-    EXPECT_EQ(d.scene.spheres[0].material, 0u);
-    EXPECT_EQ(d.scene.spheres[1].material, 0u);
-    EXPECT_EQ(d.scene.spheres[2].material, 1u);
-    EXPECT_EQ(d.scene.spheres[3].material, 2u);
+    ASSERT_EQ(d.scene.shapes.of<Sphere>().size(), 4u);
+    EXPECT_EQ(d.scene.shapes.of<Sphere>()[0].material, 0u);
+    EXPECT_EQ(d.scene.shapes.of<Sphere>()[1].material, 0u);
+    EXPECT_EQ(d.scene.shapes.of<Sphere>()[2].material, 1u);
+    EXPECT_EQ(d.scene.shapes.of<Sphere>()[3].material, 2u);
     // ior 0 with T = 0 (common in SPD files) means "no refraction": stored as 1.
     EXPECT_FLOAT_EQ(d.shading.materials[0].ior, 1.0f);
 }
@@ -366,9 +366,9 @@ TEST(NffLoader, LargeGeneratedFile) {
     const SceneDescription d = load_nff_file(path, &info);
     EXPECT_EQ(d.source, path);
     EXPECT_EQ(info.lines, 7u + 1u + kSpheres + 1u + 5u * kPolygons);
-    ASSERT_EQ(d.scene.spheres.size(), static_cast<size_t>(kSpheres));
-    expect_vec3(d.scene.spheres[kSpheres - 1].center, 99.0f, 99.0f, -(9999 % 7) - 0.5f);
-    EXPECT_FLOAT_EQ(d.scene.spheres[kSpheres - 1].radius, 0.25f);
+    ASSERT_EQ(d.scene.shapes.of<Sphere>().size(), static_cast<size_t>(kSpheres));
+    expect_vec3(d.scene.shapes.of<Sphere>()[kSpheres - 1].center, 99.0f, 99.0f, -(9999 % 7) - 0.5f);
+    EXPECT_FLOAT_EQ(d.scene.shapes.of<Sphere>()[kSpheres - 1].radius, 0.25f);
     ASSERT_EQ(d.scene.meshes.size(), 1u);  // all polygons in one two-sided mesh
     EXPECT_FALSE(d.scene.meshes[0].one_sided);
     EXPECT_EQ(d.scene.triangle_count(), 2u * kPolygons);
@@ -380,8 +380,8 @@ TEST(NffLoader, FileAndStringAgree) {
     const std::string path = dir.write("every.nff", kEveryEntity);
     const SceneDescription from_file = load_nff_file(path);
     const SceneDescription from_string = load_nff_string(kEveryEntity, path);
-    EXPECT_EQ(from_file.scene.spheres.size(), from_string.scene.spheres.size());
-    EXPECT_EQ(from_file.scene.cones.size(), from_string.scene.cones.size());
+    EXPECT_EQ(from_file.scene.shapes.of<Sphere>().size(), from_string.scene.shapes.of<Sphere>().size());
+    EXPECT_EQ(from_file.scene.shapes.of<Cone>().size(), from_string.scene.shapes.of<Cone>().size());
     EXPECT_EQ(from_file.scene.triangle_count(), from_string.scene.triangle_count());
     EXPECT_EQ(from_file.shading.materials.size(), from_string.shading.materials.size());
 }

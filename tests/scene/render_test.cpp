@@ -26,7 +26,7 @@ SceneDescription lambert_sphere_scene(int size) {
     m.ka = Vec3(0.0f);
     m.kd = Vec3(0.7f, 0.5f, 0.3f);
     d.shading.materials.push_back(m);
-    d.scene.spheres.push_back({Vec3(0), 1.0f, 0});
+    d.scene.shapes.of<Sphere>().push_back({Vec3(0), 1.0f, 0});
     DirectionalLight light;
     light.direction = Vec3(0, 0, -1);
     light.intensity = 2.0f;
@@ -75,7 +75,7 @@ TEST(RenderOrientation, ObjectRightOfViewAxisLandsInRightHalf) {
     SceneDescription d = lambert_sphere_scene(64);
     d.scene.camera.eye = Vec3(0, 0, 10);
     d.scene.camera.vfov_degrees = 60.0f;
-    d.scene.spheres[0] = {Vec3(3, 2, 0), 0.5f, 0};  // +x right, +y up for this camera
+    d.scene.shapes.of<Sphere>()[0] = {Vec3(3, 2, 0), 0.5f, 0};  // +x right, +y up for this camera
     const RenderResult r = render_scene(d, 0, false);
     int left = 0, right = 0, top = 0, bottom = 0;
     for (int y = 0; y < 64; ++y) {
@@ -203,9 +203,9 @@ namespace {
 
 TEST(RenderValidation, MaterialIdPastTheTableIsAnInputError) {
     SceneDescription d = lambert_sphere_scene(8);
-    d.scene.spheres[0].material = 3;
+    d.scene.shapes.of<Sphere>()[0].material = 3;
     EXPECT_THROW(render_scene(d, 1, false), InputError);
-    d.scene.spheres[0].material = 0;
+    d.scene.shapes.of<Sphere>()[0].material = 0;
     TriangleMesh mesh;
     mesh.add_convex_polygon({Vec3(0), Vec3(1, 0, 0), Vec3(0, 1, 0)}, {}, 0);
     mesh.materials[0] = 9;

@@ -13,7 +13,7 @@ SceneDescription one_sphere_scene(const Vec3& offset, float radius, float distan
     d.scene.camera.look_at = offset;
     d.scene.camera.vfov_degrees = 45.0f;
     d.scene.camera.width = d.scene.camera.height = 512;
-    d.scene.spheres.push_back({offset, radius, 0});
+    d.scene.shapes.of<Sphere>().push_back({offset, radius, 0});
     d.shading.materials.emplace_back();
     return d;
 }

@@ -28,7 +28,7 @@ SceneDescription sphere_scene() {
     m.kd = Vec3(0.6f);
     m.ks = Vec3(0.3f);
     d.shading.materials.push_back(m);
-    d.scene.spheres.push_back({Vec3(0), 1.0f, 0});
+    d.scene.shapes.of<Sphere>().push_back({Vec3(0), 1.0f, 0});
     PointLight light;
     light.position = Vec3(2, 3, 5);
     d.shading.lights.push_back(light);

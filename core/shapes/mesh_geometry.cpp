@@ -1,0 +1,115 @@
+#include "core/shapes/mesh_geometry.h"
+
+#include "core/embree_device.h"
+
+namespace rayo {
+namespace {
+
+Vec3 triangle_normal(const TriangleMesh& mesh, uint32_t prim) {
+    const auto& tri = mesh.triangles[prim];
+    const Vec3& p0 = mesh.positions[tri[0]];
+    // Right-handed: counter-clockwise vertices seen from the side the normal points to.
+    return glm::cross(mesh.positions[tri[1]] - p0, mesh.positions[tri[2]] - p0);
+}
+
+// One-sided meshes: reject hits on the back of a triangle (NFF polygons, docs/nff.md).
+void cull_back_faces(const RTCFilterFunctionNArguments* args) {
+    const auto* mesh = static_cast<const TriangleMesh*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        const Vec3 direction(RTCRayN_dir_x(args->ray, args->N, i),
+                             RTCRayN_dir_y(args->ray, args->N, i),
+                             RTCRayN_dir_z(args->ray, args->N, i));
+        const uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
+        if (glm::dot(triangle_normal(*mesh, prim), direction) >= 0.0f) args->valid[i] = 0;
+    }
+}
+
+class MeshBinding : public GeometryBinding {
+public:
+    MeshBinding(const TriangleMesh& mesh, uint32_t mesh_index, uint32_t shape_index)
+        : m_mesh(mesh), m_mesh_index(mesh_index), m_shape_index(shape_index) {
+        m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_TRIANGLE);
+        // Copies into Embree-owned buffers: Embree reads vertices as 16 bytes, so a shared
+        // std::vector<Vec3> would be over-read at its end.
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+            m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(float) * 3,
+            mesh.positions.size()));
+        for (size_t v = 0; v < mesh.positions.size(); ++v) {
+            vertices[3 * v + 0] = mesh.positions[v].x;
+            vertices[3 * v + 1] = mesh.positions[v].y;
+            vertices[3 * v + 2] = mesh.positions[v].z;
+        }
+        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+            m_geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(unsigned) * 3,
+            mesh.triangles.size()));
+        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+            indices[3 * t + 0] = mesh.triangles[t][0];
+            indices[3 * t + 1] = mesh.triangles[t][1];
+            indices[3 * t + 2] = mesh.triangles[t][2];
+        }
+        if (mesh.one_sided) {
+            rtcSetGeometryUserData(m_geometry, const_cast<TriangleMesh*>(&mesh));
+            rtcSetGeometryIntersectFilterFunction(m_geometry, cull_back_faces);
+            rtcSetGeometryOccludedFilterFunction(m_geometry, cull_back_faces);
+        }
+    }
+    RTCGeometry geometry() const override { return m_geometry; }
+    size_t primitive_count() const override { return m_mesh.triangles.size(); }
+
+    void surface(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& out) const override {
+        const TriangleMesh& mesh = m_mesh;
+        const float t = rayhit.ray.tfar;
+        const uint32_t prim = rayhit.hit.primID;
+        const auto& tri = mesh.triangles[prim];
+        out.t = t;
+        out.position = ray.at(t);
+        out.geometric_normal = glm::normalize(triangle_normal(mesh, prim));
+        out.shading_normal = out.geometric_normal;
+        // Interpolate vertex normals only where all three corners have one (a zero normal
+        // marks a corner without: flat faces mixed into a smooth mesh).
+        if (!mesh.normals.empty() && mesh.normals[tri[0]] != Vec3(0.0f) &&
+            mesh.normals[tri[1]] != Vec3(0.0f) && mesh.normals[tri[2]] != Vec3(0.0f)) {
+            const float u = rayhit.hit.u, v = rayhit.hit.v;
+            const Vec3 n = (1.0f - u - v) * mesh.normals[tri[0]] + u * mesh.normals[tri[1]] +
+                           v * mesh.normals[tri[2]];
+            const float length = glm::length(n);
+            if (length > 0.0f) {
+                // Keep the interpolated normal on the geometric normal's side.
+                const Vec3 unit = n / length;
+                out.shading_normal = glm::dot(unit, out.geometric_normal) >= 0.0f ? unit : -unit;
+            }
+        }
+        const Vec3& p0 = mesh.positions[tri[0]];
+        out.object_size = glm::max(glm::length(mesh.positions[tri[1]] - p0),
+                                   glm::length(mesh.positions[tri[2]] - p0));
+        out.material = mesh.materials[prim];
+        out.shape = m_shape_index;
+        out.primitive = prim;
+        out.mesh = m_mesh_index;
+        // Barycentrics kept for parameterize().
+        out.uv = glm::vec2(rayhit.hit.u, rayhit.hit.v);
+    }
+
+    void parameterize(SurfaceHit& hit) const override {
+        // Without texture coordinates in TriangleMesh: the barycentric (u, v) of the hit, and
+        // ∂p/∂u = p1 − p0.
+        const auto& tri = m_mesh.triangles[hit.primitive];
+        hit.dpdu = m_mesh.positions[tri[1]] - m_mesh.positions[tri[0]];
+    }
+
+private:
+    const TriangleMesh& m_mesh;
+    uint32_t m_mesh_index;
+    uint32_t m_shape_index;
+    RTCGeometry m_geometry = nullptr;
+};
+
+}  // namespace
+
+std::unique_ptr<GeometryBinding> make_mesh_binding(const TriangleMesh& mesh, uint32_t mesh_index,
+                                                   uint32_t shape_index) {
+    return std::make_unique<MeshBinding>(mesh, mesh_index, shape_index);
+}
+
+}  // namespace rayo

@@ -1,0 +1,79 @@
+#pragma once
+// The Shape concept: what an analytic shape provides so that one generic pair of Embree
+// user-geometry callbacks (core/user_geometry.h) can trace it, CSG can combine it and the shader
+// can light it (docs/architecture.md, "Extension points"). A shape type S is a plain struct with
+// its parameters, `uint32_t material`, and:
+//
+//   static constexpr const char* kName;       // its name in scene files ("sphere", "disk", ...)
+//   template <typename F> void fields(F& f);  // its scene-file fields (core/shapes/shape_fields.h)
+//   std::optional<FieldProblem> problem() const;  // what is wrong with it, after the fields
+//   Bounds3 bounds() const;
+//   int crossings(const Vec3& o, const Vec3& d, ShapeCrossing out[kMaxShapeCrossings]) const;
+//       // every crossing of the line o + t·d (any t), sorted by t, entering or leaving
+//   bool nearest(const Vec3& o, const Vec3& d, float tnear, float tfar, ShapeHit& hit) const;
+//       // the first crossing in (tnear, tfar): the hot path (nearest_crossing() derives it
+//       // from crossings() for shapes without a faster form)
+//   void surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const;
+//       // position, unit outward geometric and shading normals, object size
+//   void parameterization(const Vec3& position, SurfaceHit& out) const;  // uv and dpdu
+//
+// Directions are unit length. A shape whose intersection wants per-shape precomputation names
+// it `using Intersector = ...; Intersector intersector() const;` (the cone's frame); otherwise
+// the shape is its own intersector (ShapeTraits below).
+#include <cstdint>
+#include <type_traits>
+
+#include "core/ray.h"
+#include "core/surface_hit.h"
+
+namespace rayo {
+
+struct Bounds3 {
+    Vec3 lower{0.0f};
+    Vec3 upper{0.0f};
+};
+
+// A crossing of a ray's line with a shape's surface; `entering` when the ray goes from outside
+// to inside there (for open surfaces: against the outward normal).
+struct ShapeCrossing {
+    float t = 0.0f;
+    bool entering = true;
+};
+constexpr int kMaxShapeCrossings = 2;  // every current shape is convex or a quadric
+
+// What the intersection reports: the distance, and a normal at the hit (any length, outward)
+// that surface() may use instead of recomputing it.
+struct ShapeHit {
+    float t = 0.0f;
+    Vec3 normal{0.0f};
+};
+
+// The first of a shape's crossings inside (tnear, tfar), for shapes whose nearest() is no faster.
+template <typename S>
+bool nearest_crossing(const S& shape, const Vec3& origin, const Vec3& direction, float tnear,
+                      float tfar, ShapeHit& hit) {
+    ShapeCrossing crossings[kMaxShapeCrossings];
+    const int count = shape.crossings(origin, direction, crossings);
+    for (int i = 0; i < count; ++i) {
+        if (crossings[i].t > tnear && crossings[i].t < tfar) {
+            hit.t = crossings[i].t;
+            hit.normal = crossings[i].entering ? -direction : direction;
+            return true;
+        }
+    }
+    return false;
+}
+
+// Which type runs the intersection of a shape S (S itself unless it names an Intersector).
+template <typename S, typename = void>
+struct ShapeTraits {
+    using Intersector = S;
+    static constexpr bool kSelfIntersecting = true;
+};
+template <typename S>
+struct ShapeTraits<S, std::void_t<typename S::Intersector>> {
+    using Intersector = typename S::Intersector;
+    static constexpr bool kSelfIntersecting = false;
+};
+
+}  // namespace rayo

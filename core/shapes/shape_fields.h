@@ -1,0 +1,27 @@
+#pragma once
+// How a shape names its scene-file fields, so that loaders read every registered shape with one
+// generic reader (apps/scene/json_loader.cpp) and a new shape needs no loader code: the scene
+// vocabulary is the code vocabulary. A shape's `fields(f)` calls, for each field,
+//   f(name, member, FieldKind)            // required
+//   f.optional(name, member, FieldKind)   // optional; the member's current value is the default
+// and its `problem()` reports what the fields cannot say alone (apex = base, min > max, ...).
+#include <optional>
+#include <string>
+
+namespace rayo {
+
+enum class FieldKind {
+    Point,        // Vec3, any finite coordinates
+    Direction,    // Vec3, non-zero; normalized when read
+    Number,       // float
+    Positive,     // float > 0
+    NonNegative,  // float >= 0
+};
+
+// A constraint between fields that failed: the field to blame and what was expected.
+struct FieldProblem {
+    std::string field;
+    std::string message;
+};
+
+}  // namespace rayo

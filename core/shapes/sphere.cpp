@@ -1,0 +1,38 @@
+#include "core/shapes/sphere.h"
+
+namespace rayo {
+
+int Sphere::crossings(const Vec3& origin, const Vec3& direction,
+                      ShapeCrossing out[kMaxShapeCrossings]) const {
+    float t0, t1;
+    if (!sphere_roots_stable(origin, direction, center, radius, t0, t1)) return 0;
+    out[0] = {t0, true};
+    out[1] = {t1, false};
+    return 2;
+}
+
+void Sphere::surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const {
+    // Re-project the hit point onto the sphere (DESIGN "Numerics", docs/architecture.md). A
+    // sphere below one ulp of its position can put the hit on its centre in float: face the ray
+    // instead of dividing by zero (a NaN origin would reach Embree; docs/stability.md).
+    const Vec3 offset = ray.at(hit.t) - center;
+    const float length_squared = glm::dot(offset, offset);
+    const Vec3 outward =
+        length_squared > 0.0f ? offset * glm::inversesqrt(length_squared) : -ray.direction;
+    out.position = center + radius * outward;
+    out.geometric_normal = outward;
+    out.shading_normal = outward;
+    out.object_size = radius;
+}
+
+void Sphere::parameterization(const Vec3& position, SurfaceHit& out) const {
+    // Spherical coordinates about +y: n = (sinθ·sinφ, cosθ, sinθ·cosφ), u = 1/2 + φ/2π, v = θ/π;
+    // ∂p/∂u = 2π·r·(n.z, 0, −n.x).
+    const Vec3 n = (position - center) / radius;
+    const float phi = std::atan2(n.x, n.z);
+    const float theta = std::acos(glm::clamp(n.y, -1.0f, 1.0f));
+    out.uv = glm::vec2(0.5f + phi / (2.0f * kPi), theta / kPi);
+    out.dpdu = 2.0f * kPi * radius * Vec3(n.z, 0.0f, -n.x);
+}
+
+}  // namespace rayo

@@ -1,0 +1,279 @@
+#include "core/shapes/sphere_geometry.h"
+
+#include <limits>
+#include <stdexcept>
+
+#include "core/shapes/icosphere.h"
+#include "core/user_geometry.h"
+
+namespace rayo {
+namespace {
+
+template <SphereMath kMath>
+struct SphereNearest {
+    static bool run(const Sphere& s, const Vec3& origin, const Vec3& direction, float tnear,
+                    float tfar, ShapeHit& hit) {
+        return s.nearest<kMath>(origin, direction, tnear, tfar, hit);
+    }
+};
+
+// The sphere's surface at a hit reported by any representation that reports the sphere's index.
+void sphere_surface(const std::vector<Sphere>& spheres, uint32_t shape_index, const Ray& ray,
+                    float t, uint32_t index, SurfaceHit& out) {
+    const Sphere& s = spheres[index];
+    out.t = t;
+    s.surface(ray, ShapeHit{t, Vec3(0.0f)}, out);
+    out.material = s.material;
+    out.shape = shape_index;
+    out.primitive = index;
+}
+
+// Embree's RTC_GEOMETRY_TYPE_SPHERE_POINT: its own kernel, rayo's re-projected surface.
+class PointSphereBinding : public GeometryBinding {
+public:
+    PointSphereBinding(const std::vector<Sphere>& spheres, uint32_t shape_index)
+        : m_spheres(spheres), m_shape_index(shape_index) {
+        m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_SPHERE_POINT);
+        auto* points = static_cast<float*>(rtcSetNewGeometryBuffer(
+            m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float),
+            spheres.size()));
+        for (size_t i = 0; i < spheres.size(); ++i) {
+            points[4 * i + 0] = spheres[i].center.x;
+            points[4 * i + 1] = spheres[i].center.y;
+            points[4 * i + 2] = spheres[i].center.z;
+            points[4 * i + 3] = spheres[i].radius;
+        }
+    }
+    RTCGeometry geometry() const override { return m_geometry; }
+    size_t primitive_count() const override { return m_spheres.size(); }
+    void surface(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& out) const override {
+        sphere_surface(m_spheres, m_shape_index, ray, rayhit.ray.tfar, rayhit.hit.primID, out);
+    }
+    void parameterize(SurfaceHit& hit) const override {
+        m_spheres[hit.primitive].parameterization(hit.position, hit);
+    }
+
+private:
+    const std::vector<Sphere>& m_spheres;
+    uint32_t m_shape_index;
+    RTCGeometry m_geometry = nullptr;
+};
+
+// Each sphere tessellated into an icosphere of Embree triangles. The tessellation is the
+// surface: no re-projection, so its silhouette and facet error show in the image, which is what
+// the comparison measures.
+class IcosphereBinding : public GeometryBinding {
+public:
+    IcosphereBinding(const std::vector<Sphere>& spheres, uint32_t shape_index,
+                     const SphereRepresentation& representation)
+        : m_spheres(spheres), m_shape_index(shape_index), m_smooth(representation.mesh_smooth) {
+        Icosphere unit = make_icosphere(representation.mesh_level);
+        m_triangles_per_sphere = static_cast<uint32_t>(unit.triangles.size());
+        const size_t vertex_count = unit.positions.size();
+        m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* vertices = static_cast<float*>(
+            rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                    3 * sizeof(float), spheres.size() * vertex_count));
+        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+            m_geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
+            spheres.size() * unit.triangles.size()));
+        for (size_t i = 0; i < spheres.size(); ++i) {
+            for (size_t v = 0; v < vertex_count; ++v) {
+                const Vec3 p = spheres[i].center + spheres[i].radius * unit.positions[v];
+                float* out = vertices + 3 * (i * vertex_count + v);
+                out[0] = p.x;
+                out[1] = p.y;
+                out[2] = p.z;
+            }
+            const auto first = static_cast<unsigned>(i * vertex_count);
+            unsigned* out = indices + 3 * i * unit.triangles.size();
+            for (const auto& t : unit.triangles) {
+                *out++ = first + t[0];
+                *out++ = first + t[1];
+                *out++ = first + t[2];
+            }
+        }
+        m_normals = std::move(unit.positions);
+        m_triangles = std::move(unit.triangles);
+    }
+    RTCGeometry geometry() const override { return m_geometry; }
+    size_t primitive_count() const override { return m_spheres.size() * m_triangles_per_sphere; }
+    void surface(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& out) const override {
+        const float t = rayhit.ray.tfar;
+        const uint32_t prim = rayhit.hit.primID;
+        const uint32_t sphere = prim / m_triangles_per_sphere;
+        const auto& tri = m_triangles[prim % m_triangles_per_sphere];
+        const Vec3& n0 = m_normals[tri[0]];
+        const Vec3 flat =
+            glm::normalize(glm::cross(m_normals[tri[1]] - n0, m_normals[tri[2]] - n0));
+        out.t = t;
+        out.position = ray.at(t);
+        out.geometric_normal = flat;
+        out.shading_normal = flat;
+        if (m_smooth) {
+            const float u = rayhit.hit.u, v = rayhit.hit.v;
+            out.shading_normal = glm::normalize((1.0f - u - v) * n0 + u * m_normals[tri[1]] +
+                                                v * m_normals[tri[2]]);
+        }
+        out.object_size = m_spheres[sphere].radius;
+        out.material = m_spheres[sphere].material;
+        out.shape = m_shape_index;
+        out.primitive = sphere;
+    }
+    void parameterize(SurfaceHit& hit) const override {
+        m_spheres[hit.primitive].parameterization(hit.position, hit);
+    }
+
+private:
+    const std::vector<Sphere>& m_spheres;
+    uint32_t m_shape_index;
+    bool m_smooth;
+    uint32_t m_triangles_per_sphere = 0;
+    std::vector<Vec3> m_normals;  // of the unit icosphere
+    std::vector<std::array<uint32_t, 3>> m_triangles;
+    RTCGeometry m_geometry = nullptr;
+};
+
+// Brute force, the reference: one user primitive bounding every sphere, whose callback tests
+// them all in order (nearest first, as the window shrinks) and reports the sphere's index.
+struct BruteForceData {
+    const std::vector<Sphere>* spheres;
+    SphereMath math;
+    Bounds3 bounds;
+};
+
+bool nearest_of_all(const BruteForceData& data, const Vec3& origin, const Vec3& direction,
+                    float tnear, float tfar, float& t, uint32_t& index) {
+    bool found = false;
+    const auto count = static_cast<uint32_t>(data.spheres->size());
+    for (uint32_t i = 0; i < count; ++i) {
+        const Sphere& s = (*data.spheres)[i];
+        float candidate;
+        bool far_root;
+        if (intersect_sphere(data.math, origin, direction, s.center, s.radius, tnear, tfar,
+                             candidate, far_root)) {
+            tfar = candidate;
+            t = candidate;
+            index = i;
+            found = true;
+        }
+    }
+    return found;
+}
+
+void brute_force_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* data = static_cast<const BruteForceData*>(args->geometryUserPtr);
+    RTCBounds* out = args->bounds_o;
+    out->lower_x = data->bounds.lower.x;
+    out->lower_y = data->bounds.lower.y;
+    out->lower_z = data->bounds.lower.z;
+    out->upper_x = data->bounds.upper.x;
+    out->upper_y = data->bounds.upper.y;
+    out->upper_z = data->bounds.upper.z;
+}
+
+void brute_force_intersect(const RTCIntersectFunctionNArguments* args) {
+    const auto* data = static_cast<const BruteForceData*>(args->geometryUserPtr);
+    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
+    RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
+    const unsigned n = args->N;
+    for (unsigned i = 0; i < n; ++i) {
+        if (args->valid[i] == 0) continue;
+        Vec3 origin, direction;
+        read_ray_lane(ray, n, i, origin, direction);
+        float t;
+        uint32_t index;
+        if (!nearest_of_all(*data, origin, direction, RTCRayN_tnear(ray, n, i),
+                            RTCRayN_tfar(ray, n, i), t, index)) {
+            continue;
+        }
+        RTCRayN_tfar(ray, n, i) = t;
+        RTCHitN_u(hit, n, i) = 0.0f;
+        RTCHitN_v(hit, n, i) = 0.0f;
+        RTCHitN_primID(hit, n, i) = index;
+        RTCHitN_geomID(hit, n, i) = args->geomID;
+        RTCHitN_instID(hit, n, i, 0) = args->context->instID[0];
+    }
+}
+
+void brute_force_occluded(const RTCOccludedFunctionNArguments* args) {
+    const auto* data = static_cast<const BruteForceData*>(args->geometryUserPtr);
+    const unsigned n = args->N;
+    for (unsigned i = 0; i < n; ++i) {
+        if (args->valid[i] == 0) continue;
+        Vec3 origin, direction;
+        read_ray_lane(args->ray, n, i, origin, direction);
+        float t;
+        uint32_t index;
+        if (nearest_of_all(*data, origin, direction, RTCRayN_tnear(args->ray, n, i),
+                           RTCRayN_tfar(args->ray, n, i), t, index)) {
+            RTCRayN_tfar(args->ray, n, i) = -std::numeric_limits<float>::infinity();
+        }
+    }
+}
+
+class BruteForceBinding : public GeometryBinding {
+public:
+    BruteForceBinding(const std::vector<Sphere>& spheres, uint32_t shape_index, SphereMath math)
+        : m_spheres(spheres), m_shape_index(shape_index) {
+        m_data.spheres = &spheres;
+        m_data.math = math;
+        m_data.bounds = spheres.front().bounds();
+        for (const Sphere& s : spheres) {
+            const Bounds3 b = s.bounds();
+            m_data.bounds.lower = glm::min(m_data.bounds.lower, b.lower);
+            m_data.bounds.upper = glm::max(m_data.bounds.upper, b.upper);
+        }
+        m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(m_geometry, 1);
+        rtcSetGeometryUserData(m_geometry, &m_data);
+        rtcSetGeometryBoundsFunction(m_geometry, brute_force_bounds, nullptr);
+        rtcSetGeometryIntersectFunction(m_geometry, brute_force_intersect);
+        rtcSetGeometryOccludedFunction(m_geometry, brute_force_occluded);
+    }
+    RTCGeometry geometry() const override { return m_geometry; }
+    size_t primitive_count() const override { return m_spheres.size(); }
+    void surface(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& out) const override {
+        sphere_surface(m_spheres, m_shape_index, ray, rayhit.ray.tfar, rayhit.hit.primID, out);
+    }
+    void parameterize(SurfaceHit& hit) const override {
+        m_spheres[hit.primitive].parameterization(hit.position, hit);
+    }
+
+private:
+    const std::vector<Sphere>& m_spheres;
+    uint32_t m_shape_index;
+    BruteForceData m_data{};
+    RTCGeometry m_geometry = nullptr;
+};
+
+}  // namespace
+
+std::unique_ptr<GeometryBinding> make_binding(const std::vector<Sphere>& spheres,
+                                              uint32_t shape_index, const AccelOptions& options) {
+    switch (options.spheres.method) {
+        case SphereMethod::User:
+            switch (options.sphere_math) {
+                case SphereMath::Seed:
+                    return std::make_unique<ShapeBinding<Sphere, SphereNearest<SphereMath::Seed>>>(
+                        spheres, shape_index);
+                case SphereMath::Double:
+                    return std::make_unique<
+                        ShapeBinding<Sphere, SphereNearest<SphereMath::Double>>>(spheres,
+                                                                                 shape_index);
+                case SphereMath::Stable: break;
+            }
+            return std::make_unique<ShapeBinding<Sphere, SphereNearest<SphereMath::Stable>>>(
+                spheres, shape_index);
+        case SphereMethod::EmbreePoint:
+            return std::make_unique<PointSphereBinding>(spheres, shape_index);
+        case SphereMethod::Mesh:
+            return std::make_unique<IcosphereBinding>(spheres, shape_index, options.spheres);
+        case SphereMethod::BruteForce:
+            return std::make_unique<BruteForceBinding>(spheres, shape_index, options.sphere_math);
+        case SphereMethod::Auto: break;
+    }
+    throw std::logic_error("Accel: the auto sphere method must be resolved by the caller");
+}
+
+}  // namespace rayo

@@ -1,0 +1,29 @@
+#pragma once
+// What the shader needs to know about the nearest hit: filled by the shape that was hit
+// (core/shapes/shape.h) through the accel.
+#include <cstdint>
+
+#include <glm/vec2.hpp>
+
+#include "core/math.h"
+
+namespace rayo {
+
+struct SurfaceHit {
+    float t = 0.0f;
+    Vec3 position{0.0f};          // on the surface (sphere hits re-projected onto the sphere)
+    Vec3 geometric_normal{0.0f};  // unit, outward (analytic shapes) or by winding (triangles)
+    Vec3 shading_normal{0.0f};    // unit, interpolated where the mesh has normals; same side as Ng
+    float object_size = 0.0f;     // radius or extent: scales the spawned-ray offset
+    uint32_t material = 0;
+    uint32_t shape = 0;      // the shape type: its index in AnalyticShapes, or kTriangleShape
+    uint32_t primitive = 0;  // index of the shape within its type, or of the triangle in its mesh
+    uint32_t mesh = 0;       // the mesh's index, for triangles
+    uint32_t geometry = 0;   // the accel's Embree geometry id
+    // Surface parameterization, filled on request only (Accel::parameterize): no shader needs it
+    // per hit yet, and the sphere's costs an atan2 and an acos.
+    glm::vec2 uv{0.0f};
+    Vec3 dpdu{0.0f};
+};
+
+}  // namespace rayo

@@ -1,0 +1,156 @@
+#pragma once
+// The one generic pair of Embree user-geometry callbacks, templated on the shape's intersector
+// (core/shapes/shape.h), and the binding that attaches any Shape type as Embree user geometry.
+// Written for any N: rtcIntersect1 calls them with N = 1, packets and streams with 4/8/16; per
+// lane data goes through the RTCRayN_/RTCHitN_ accessors (Embree 3 user-geometry API).
+#include <embree3/rtcore.h>
+
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "core/embree_device.h"
+#include "core/geometry_binding.h"
+#include "core/shapes/shape.h"
+
+namespace rayo {
+
+// How a callback asks an intersector for its nearest hit: `nearest()` by default; spheres pass
+// one that names the math (core/shapes/sphere_geometry.h).
+struct CallNearest {
+    template <typename I>
+    static bool run(const I& shape, const Vec3& origin, const Vec3& direction, float tnear,
+                    float tfar, ShapeHit& hit) {
+        return shape.nearest(origin, direction, tnear, tfar, hit);
+    }
+};
+
+template <typename S>
+struct UserGeometryData {
+    const S* shapes = nullptr;
+    const typename ShapeTraits<S>::Intersector* intersectors = nullptr;
+};
+
+template <typename RayN>
+inline void read_ray_lane(RayN* ray, unsigned n, unsigned i, Vec3& origin, Vec3& direction) {
+    origin = Vec3(RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i));
+    direction = Vec3(RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i), RTCRayN_dir_z(ray, n, i));
+}
+
+template <typename S>
+void user_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* data = static_cast<const UserGeometryData<S>*>(args->geometryUserPtr);
+    const Bounds3 b = data->shapes[args->primID].bounds();
+    RTCBounds* out = args->bounds_o;
+    out->lower_x = b.lower.x;
+    out->lower_y = b.lower.y;
+    out->lower_z = b.lower.z;
+    out->upper_x = b.upper.x;
+    out->upper_y = b.upper.y;
+    out->upper_z = b.upper.z;
+}
+
+template <typename S, typename Call = CallNearest>
+void user_intersect(const RTCIntersectFunctionNArguments* args) {
+    const auto* data = static_cast<const UserGeometryData<S>*>(args->geometryUserPtr);
+    const auto& shape = data->intersectors[args->primID];
+    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
+    RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
+    const unsigned n = args->N;
+    for (unsigned i = 0; i < n; ++i) {
+        if (args->valid[i] == 0) continue;
+        Vec3 origin, direction;
+        read_ray_lane(ray, n, i, origin, direction);
+        ShapeHit h;
+        if (!Call::run(shape, origin, direction, RTCRayN_tnear(ray, n, i),
+                       RTCRayN_tfar(ray, n, i), h)) {
+            continue;
+        }
+        RTCRayN_tfar(ray, n, i) = h.t;
+        RTCHitN_Ng_x(hit, n, i) = h.normal.x;
+        RTCHitN_Ng_y(hit, n, i) = h.normal.y;
+        RTCHitN_Ng_z(hit, n, i) = h.normal.z;
+        RTCHitN_u(hit, n, i) = 0.0f;
+        RTCHitN_v(hit, n, i) = 0.0f;
+        RTCHitN_primID(hit, n, i) = args->primID;
+        RTCHitN_geomID(hit, n, i) = args->geomID;
+        RTCHitN_instID(hit, n, i, 0) = args->context->instID[0];
+    }
+}
+
+template <typename S, typename Call = CallNearest>
+void user_occluded(const RTCOccludedFunctionNArguments* args) {
+    const auto* data = static_cast<const UserGeometryData<S>*>(args->geometryUserPtr);
+    const auto& shape = data->intersectors[args->primID];
+    const unsigned n = args->N;
+    for (unsigned i = 0; i < n; ++i) {
+        if (args->valid[i] == 0) continue;
+        Vec3 origin, direction;
+        read_ray_lane(args->ray, n, i, origin, direction);
+        ShapeHit h;
+        if (Call::run(shape, origin, direction, RTCRayN_tnear(args->ray, n, i),
+                      RTCRayN_tfar(args->ray, n, i), h)) {
+            RTCRayN_tfar(args->ray, n, i) = -std::numeric_limits<float>::infinity();
+        }
+    }
+}
+
+// Any Shape S as Embree user geometry: one primitive per shape, the generic callbacks above,
+// the hit surface from S::surface.
+template <typename S, typename Call = CallNearest>
+class ShapeBinding : public GeometryBinding {
+public:
+    ShapeBinding(const std::vector<S>& shapes, uint32_t shape_index)
+        : m_shapes(shapes), m_shape_index(shape_index) {
+        using Traits = ShapeTraits<S>;
+        m_data.shapes = shapes.data();
+        if constexpr (Traits::kSelfIntersecting) {
+            m_data.intersectors = shapes.data();
+        } else {
+            m_intersectors.reserve(shapes.size());
+            for (const S& s : shapes) m_intersectors.push_back(s.intersector());
+            m_data.intersectors = m_intersectors.data();
+        }
+        m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(m_geometry, static_cast<unsigned>(shapes.size()));
+        // Embree 3 ignores the bounds function's own pointer: the data goes here.
+        rtcSetGeometryUserData(m_geometry, &m_data);
+        rtcSetGeometryBoundsFunction(m_geometry, user_bounds<S>, nullptr);
+        rtcSetGeometryIntersectFunction(m_geometry, user_intersect<S, Call>);
+        rtcSetGeometryOccludedFunction(m_geometry, user_occluded<S, Call>);
+    }
+
+    RTCGeometry geometry() const override { return m_geometry; }
+    size_t primitive_count() const override { return m_shapes.size(); }
+    void surface(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& out) const override {
+        const uint32_t prim = rayhit.hit.primID;
+        const S& shape = m_shapes[prim];
+        const ShapeHit hit{rayhit.ray.tfar, Vec3(rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z)};
+        out.t = hit.t;
+        shape.surface(ray, hit, out);
+        out.material = shape.material;
+        out.shape = m_shape_index;
+        out.primitive = prim;
+    }
+    void parameterize(SurfaceHit& hit) const override {
+        m_shapes[hit.primitive].parameterization(hit.position, hit);
+    }
+
+private:
+    const std::vector<S>& m_shapes;
+    uint32_t m_shape_index;
+    std::vector<typename ShapeTraits<S>::Intersector> m_intersectors;  // when S names one
+    UserGeometryData<S> m_data;
+    RTCGeometry m_geometry = nullptr;
+};
+
+// The default binding of a shape type: user geometry. A shape type with other representations
+// overloads make_binding for its vector type (spheres: core/shapes/sphere_geometry.h).
+struct AccelOptions;
+template <typename S>
+std::unique_ptr<GeometryBinding> make_binding(const std::vector<S>& shapes, uint32_t shape_index,
+                                              const AccelOptions& /*options*/) {
+    return std::make_unique<ShapeBinding<S>>(shapes, shape_index);
+}
+
+}  // namespace rayo
