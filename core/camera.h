@@ -5,6 +5,8 @@
 #include <optional>
 #include <string>
 
+#include <glm/vec2.hpp>
+
 #include "core/ray.h"
 
 namespace rayo {
@@ -34,12 +36,20 @@ public:
     // above the limits.
     static Camera create(const CameraDesc& desc, const std::string& where = "camera");
 
-    // Ray through image position (px, py) in pixel units: (i, j) is the centre of pixel (i, j).
-    Ray generate_ray(float px, float py) const {
-        const Vec3 on_window = m_origin + px * m_step_right - py * m_step_down;
-        Ray ray;
+    // The camera interface (core/render.h): the ray through film position `film` in pixel units
+    // ((i, j) is the centre of pixel (i, j)) and lens position `lens` in [0, 1)²; false where
+    // the camera has no ray. The window camera is a pinhole: it ignores the lens and always
+    // has a ray.
+    bool generate_ray(const glm::vec2& film, const glm::vec2& /*lens*/, Ray& ray) const {
+        const Vec3 on_window = m_origin + film.x * m_step_right - film.y * m_step_down;
         ray.origin = m_eye;
         ray.direction = glm::normalize(on_window - m_eye);
+        return true;
+    }
+    // The pinhole ray through (px, py), for callers that have no lens sample.
+    Ray generate_ray(float px, float py) const {
+        Ray ray;
+        generate_ray(glm::vec2(px, py), glm::vec2(0.5f), ray);
         return ray;
     }
 

@@ -1,17 +1,28 @@
 #pragma once
-// The float RGBA film: scene-linear Rec.709 radiance, row 0 at the top. Renderers write
-// disjoint pixels from many threads; nothing here locks.
+// The float RGBA film: scene-linear Rec.709 radiance, row 0 at the top, the whole image in
+// memory. The first tile sink (core/tile_sink.h): tiles are copied in as they finish, from many
+// threads into disjoint pixels; nothing here locks.
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
 #include "core/math.h"
+#include "core/tile_sink.h"
 
 namespace rayo {
 
-class Film {
+class Film : public TileSink {
 public:
     Film(int width, int height)
         : m_width(width), m_height(height), m_rgba(static_cast<size_t>(width) * height * 4, 0.0f) {}
+
+    void write_tile(const Tile& tile, const float* rgba) override {
+        for (int row = 0; row < tile.height; ++row) {
+            const float* source = rgba + static_cast<size_t>(row) * tile.width * 4;
+            float* target = &m_rgba[(static_cast<size_t>(tile.y0 + row) * m_width + tile.x0) * 4];
+            std::copy(source, source + static_cast<size_t>(tile.width) * 4, target);
+        }
+    }
 
     int width() const { return m_width; }
     int height() const { return m_height; }

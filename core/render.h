@@ -1,102 +1,160 @@
 #pragma once
-// The tile-parallel render loop: tbb::parallel_for over square tiles, stratified samples per
-// pixel from the stateless hash (core/sampling.h), per-thread ray counters merged at the end.
-// Generic over the integrator (any type with `Vec3 radiance(const Ray&, RayCounters&) const`
-// and `void radiance_coherent(const Ray*, int, Vec3*, RayCounters&) const`), so the hot path has
-// no virtual call. The result does not depend on thread count, tile size or the coherent path:
-// every pixel's samples are summed in a fixed order by the one task that owns the pixel, and the
-// coherent path computes the same values as the single-ray one.
-#include <tbb/blocked_range2d.h>
+// The tile-parallel render loop: the image's fixed tile grid (core/tile_grid.h), tiles in
+// tbb::parallel_for, stratified samples per pixel from the stateless hash (core/sampling.h),
+// per-thread ray counters merged at the end, every finished tile handed to a sink
+// (core/tile_sink.h). Generic over the camera and the integrator, so the hot path has no
+// virtual call:
+//   camera:     int width() const; int height() const;
+//               bool generate_ray(glm::vec2 film, glm::vec2 lens, Ray& out) const;
+//   integrator: Vec3 radiance(const Ray&, RayCounters&) const;
+//               void radiance_coherent(const Ray*, int, Vec3*, RayCounters&) const;
+// The result does not depend on thread count, tile size or the coherent path: every pixel's
+// samples are summed in a fixed order by the one task that owns the pixel, and the coherent
+// path computes the same values as the single-ray one.
+#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <vector>
 
-#include "core/camera.h"
-#include "core/film.h"
 #include "core/progress.h"
 #include "core/sampling.h"
 #include "core/stats.h"
+#include "core/tile_grid.h"
+#include "core/tile_sink.h"
 #include "core/tsan_handoff.h"
 
 namespace rayo {
 
 struct TileSettings {
     int spp = 1;
-    int tile_size = 16;
+    int tile_size = kDefaultTileSize;
     // Camera rays of a tile in batches through the integrator's coherent path (Embree streams);
     // false: one ray at a time (the reference the coherent path is tested against).
     bool coherent = true;
 };
 
-// Camera ray for sample `s` of pixel (x, y): stratified jitter, the pixel centre when spp = 1.
-inline Ray pixel_ray(const Camera& camera, int x, int y, uint32_t s, uint32_t spp) {
-    const PixelOffset o =
-        stratified_offset(static_cast<uint32_t>(x), static_cast<uint32_t>(y), s, spp);
-    return camera.generate_ray(static_cast<float>(x) + o.dx, static_cast<float>(y) + o.dy);
+// Camera ray for sample `s` of pixel (x, y): stratified jitter on the film (the pixel centre when
+// spp = 1) and on the lens. False where the camera has no ray (e.g. outside a fisheye's circle).
+template <typename Camera>
+bool pixel_ray(const Camera& camera, int x, int y, uint32_t s, uint32_t spp, Ray& ray) {
+    const auto ux = static_cast<uint32_t>(x), uy = static_cast<uint32_t>(y);
+    const PixelOffset o = stratified_offset(ux, uy, s, spp);
+    const glm::vec2 film(static_cast<float>(x) + o.dx, static_cast<float>(y) + o.dy);
+    return camera.generate_ray(film, lens_sample(ux, uy, s, spp), ray);
 }
 
-template <typename Integrator>
-RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
-                         const TileSettings& settings, Film& film,
-                         ProgressReporter* progress = nullptr) {
-    const int width = camera.width(), height = camera.height();
-    const int tile = settings.tile_size > 0 ? settings.tile_size : 16;
-    const auto spp = static_cast<uint32_t>(settings.spp > 0 ? settings.spp : 1);
-    const float inverse_spp = 1.0f / static_cast<float>(spp);
-    tbb::enumerable_thread_specific<RayCounters> counters;
-
-    // The caller's writes (film, counters) before every task; every task before the merge.
-    int handoff = 0;
-    tsan_release(&handoff);
-    // Grain = one tile; simple_partitioner splits down to tiles of at most tile × tile.
-    tbb::parallel_for(
-        tbb::blocked_range2d<int>(0, height, tile, 0, width, tile),
-        [&](const tbb::blocked_range2d<int>& range) {
-            tsan_acquire(&handoff);
-            RayCounters& local = counters.local();
-            if (!settings.coherent) {
-                for (int y = range.rows().begin(); y < range.rows().end(); ++y) {
-                    for (int x = range.cols().begin(); x < range.cols().end(); ++x) {
-                        Vec3 sum(0.0f);
-                        for (uint32_t s = 0; s < spp; ++s) {
-                            sum += integrator.radiance(pixel_ray(camera, x, y, s, spp), local);
-                        }
-                        film.set(x, y, sum * inverse_spp);
+// One tile's pixels into `rgba` (tile-local, row-major).
+template <typename Camera, typename Integrator>
+void render_tile(const Camera& camera, const Integrator& integrator, bool coherent, uint32_t spp,
+                 float inverse_spp, const Tile& tile, float* rgba, RayCounters& counters) {
+    const int pixels = static_cast<int>(tile.pixel_count());
+    auto store = [&](int i, const Vec3& sum, uint32_t rays) {
+        float* p = rgba + static_cast<size_t>(i) * 4;
+        const Vec3 mean = sum * inverse_spp;
+        p[0] = mean.x;
+        p[1] = mean.y;
+        p[2] = mean.z;
+        p[3] = rays == spp ? 1.0f : static_cast<float>(rays) * inverse_spp;
+    };
+    if (!coherent) {
+        for (int i = 0; i < pixels; ++i) {
+            const int x = tile.x0 + i % tile.width, y = tile.y0 + i / tile.width;
+            Vec3 sum(0.0f);
+            uint32_t rays = 0;
+            for (uint32_t s = 0; s < spp; ++s) {
+                Ray ray;
+                if (!pixel_ray(camera, x, y, s, spp, ray)) continue;
+                sum += integrator.radiance(ray, counters);
+                ++rays;
+            }
+            store(i, sum, rays);
+        }
+        return;
+    }
+    // Coherent batches: the tile in kCoherentBlock² blocks of the image's global block grid
+    // (tile sizes are multiples of it), each block's pixels in row-major chunks of kChunk, one
+    // batch per chunk and sample index. Embree's packet kernels can round triangle hits
+    // differently from single rays, so the batches must not depend on the tile size: with the
+    // global blocks they are the same for every tile size. Sums run over samples in the same
+    // order as above.
+    constexpr int kChunk = 64;
+    Ray rays[kChunk];
+    Vec3 radiance[kChunk], sum[kChunk];
+    int owner[kChunk];
+    uint32_t ray_count[kChunk];
+    for (int by = 0; by < tile.height; by += kCoherentBlock) {
+        for (int bx = 0; bx < tile.width; bx += kCoherentBlock) {
+            const int block_width = std::min(kCoherentBlock, tile.width - bx);
+            const int block_pixels = block_width * std::min(kCoherentBlock, tile.height - by);
+            for (int first = 0; first < block_pixels; first += kChunk) {
+                const int n = std::min(kChunk, block_pixels - first);
+                for (int i = 0; i < n; ++i) {
+                    sum[i] = Vec3(0.0f);
+                    ray_count[i] = 0;
+                }
+                for (uint32_t s = 0; s < spp; ++s) {
+                    int batch = 0;
+                    for (int i = 0; i < n; ++i) {
+                        const int x = tile.x0 + bx + (first + i) % block_width;
+                        const int y = tile.y0 + by + (first + i) / block_width;
+                        if (!pixel_ray(camera, x, y, s, spp, rays[batch])) continue;
+                        owner[batch++] = i;
+                    }
+                    integrator.radiance_coherent(rays, batch, radiance, counters);
+                    for (int k = 0; k < batch; ++k) {
+                        sum[owner[k]] += radiance[k];
+                        ++ray_count[owner[k]];
                     }
                 }
-            } else {
-                // The tile's pixels in row-major chunks of kChunk; each sample index of a chunk
-                // is one coherent batch. Sums run over samples in the same order as above.
-                constexpr int kChunk = 64;
-                const int columns = static_cast<int>(range.cols().size());
-                const int pixels = static_cast<int>(range.rows().size()) * columns;
-                Ray rays[kChunk];
-                Vec3 radiance[kChunk], sum[kChunk];
-                for (int first = 0; first < pixels; first += kChunk) {
-                    const int n = std::min(kChunk, pixels - first);
-                    for (int i = 0; i < n; ++i) sum[i] = Vec3(0.0f);
-                    for (uint32_t s = 0; s < spp; ++s) {
-                        for (int i = 0; i < n; ++i) {
-                            rays[i] =
-                                pixel_ray(camera, range.cols().begin() + (first + i) % columns,
-                                          range.rows().begin() + (first + i) / columns, s, spp);
-                        }
-                        integrator.radiance_coherent(rays, n, radiance, local);
-                        for (int i = 0; i < n; ++i) sum[i] += radiance[i];
-                    }
-                    for (int i = 0; i < n; ++i) {
-                        film.set(range.cols().begin() + (first + i) % columns,
-                                 range.rows().begin() + (first + i) / columns,
-                                 sum[i] * inverse_spp);
-                    }
+                for (int i = 0; i < n; ++i) {
+                    const int local_x = bx + (first + i) % block_width;
+                    const int local_y = by + (first + i) / block_width;
+                    store(local_y * tile.width + local_x, sum[i], ray_count[i]);
                 }
             }
-            if (progress) progress->add(range.rows().size() * range.cols().size());
+        }
+    }
+}
+
+// Renders the tiles of `grid` listed in `tiles` (all of them when empty) into `sink`. A pixel's
+// alpha is the share of its samples that had a camera ray; samples without one add no radiance.
+template <typename Camera, typename Integrator>
+RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
+                         const TileSettings& settings, TileSink& sink,
+                         ProgressReporter* progress = nullptr,
+                         const std::vector<int>& tiles = {}) {
+    const TileGrid grid(camera.width(), camera.height(), settings.tile_size);
+    const auto spp = static_cast<uint32_t>(settings.spp > 0 ? settings.spp : 1);
+    const float inverse_spp = 1.0f / static_cast<float>(spp);
+    const int count = tiles.empty() ? grid.tile_count() : static_cast<int>(tiles.size());
+    tbb::enumerable_thread_specific<RayCounters> counters;
+    tbb::enumerable_thread_specific<std::vector<float>> buffers;
+    sink.begin(grid);
+
+    // The caller's writes (sink, counters) before every task; every task before the merge.
+    int handoff = 0;
+    tsan_release(&handoff);
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, count, 1),
+        [&](const tbb::blocked_range<int>& range) {
+            tsan_acquire(&handoff);
+            RayCounters& local = counters.local();
+            std::vector<float>& rgba = buffers.local();
+            for (int item = range.begin(); item < range.end(); ++item) {
+                const Tile tile = grid.tile(tiles.empty() ? item : tiles[item]);
+                rgba.assign(tile.pixel_count() * 4, 0.0f);
+                render_tile(camera, integrator, settings.coherent, spp, inverse_spp, tile,
+                            rgba.data(), local);
+                sink.write_tile(tile, rgba.data());
+                if (progress) progress->add(tile.pixel_count());
+            }
             tsan_release(&handoff);
         },
         tbb::simple_partitioner());
     tsan_acquire(&handoff);
+    sink.finish();
 
     RayCounters total;
     for (const RayCounters& c : counters) total += c;

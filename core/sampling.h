@@ -3,6 +3,8 @@
 // image does not depend on the thread count or tile order (DESIGN.md "Hot-path rules").
 #include <cstdint>
 
+#include <glm/vec2.hpp>
+
 namespace rayo {
 
 // A 32-bit integer finaliser (the "lowbias32" constants of Chris Wellons' hash prospector).
@@ -32,10 +34,20 @@ inline float sample_uniform(uint32_t x, uint32_t y, uint32_t sample, uint32_t di
 
 // Stratified sub-pixel offset in [-0.5, 0.5)² for sample `s` of `spp`: the pixel is split into
 // columns × rows strata (columns the largest divisor of spp not above √spp), one jittered sample
-// each. One sample per pixel goes through the pixel centre.
+// each. One sample per pixel goes through the pixel centre. The jitter uses hash dimensions
+// first_dimension and first_dimension + 1: 0 for the film position, kLensDimension for the lens.
 struct PixelOffset {
     float dx, dy;
 };
-PixelOffset stratified_offset(uint32_t x, uint32_t y, uint32_t s, uint32_t spp);
+PixelOffset stratified_offset(uint32_t x, uint32_t y, uint32_t s, uint32_t spp,
+                              uint32_t first_dimension = 0);
+
+// The lens sample of sample `s` of pixel (x, y), in [0, 1)²: stratified like the film position
+// but from its own hash dimensions; the lens centre (0.5, 0.5) at one sample per pixel.
+constexpr uint32_t kLensDimension = 2;
+inline glm::vec2 lens_sample(uint32_t x, uint32_t y, uint32_t s, uint32_t spp) {
+    const PixelOffset o = stratified_offset(x, y, s, spp, kLensDimension);
+    return glm::vec2(o.dx + 0.5f, o.dy + 0.5f);
+}
 
 }  // namespace rayo

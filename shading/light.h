@@ -1,43 +1,21 @@
 #pragma once
-// Point and directional lights with colour, intensity and distance attenuation
-// (seed 000: f(d) = 1/(d + d0) or 1/(a0 + a1·d + a2·d²); seed 003 eq. 2.2 clamps to 1).
-#include <algorithm>
+// The lights the integrator samples. Every light type provides
+//   bool sample(const Vec3& point, const glm::vec2& u, LightSample& out) const;
+// (shading/light_sample.h; u in [0,1)² picks a point on lights with an extent). Adding a light
+// type is its file pair and its entry in the list below; the integrator only calls
+// sample_light (docs/architecture.md, "Extension points").
 #include <variant>
 
-#include "core/math.h"
+#include "shading/directional_light.h"
+#include "shading/point_light.h"
 
 namespace rayo {
 
-struct Attenuation {
-    enum class Kind { None, Linear, Quadratic };
-    Kind kind = Kind::None;
-    float d0 = 0.0f;                      // Linear: 1/(d + d0)
-    float a0 = 1.0f, a1 = 0.0f, a2 = 0.0f;  // Quadratic: min(1, 1/(a0 + a1·d + a2·d²))
-
-    float factor(float distance) const {
-        switch (kind) {
-            case Kind::Linear: return 1.0f / (distance + d0);
-            case Kind::Quadratic:
-                return std::min(1.0f, 1.0f / (a0 + a1 * distance + a2 * distance * distance));
-            case Kind::None: break;
-        }
-        return 1.0f;
-    }
-};
-
-struct PointLight {
-    Vec3 position{0.0f};
-    Vec3 color{1.0f};
-    float intensity = 1.0f;
-    Attenuation attenuation;
-};
-
-struct DirectionalLight {
-    Vec3 direction{0.0f, -1.0f, 0.0f};  // the direction light travels (unit)
-    Vec3 color{1.0f};
-    float intensity = 1.0f;
-};
-
 using Light = std::variant<PointLight, DirectionalLight>;
+
+inline bool sample_light(const Light& light, const Vec3& point, const glm::vec2& u,
+                         LightSample& out) {
+    return std::visit([&](const auto& l) { return l.sample(point, u, out); }, light);
+}
 
 }  // namespace rayo

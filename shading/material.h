@@ -29,20 +29,25 @@ struct MaterialTextures {
     bool any() const { return ka >= 0 || kd >= 0 || ks >= 0 || bump >= 0; }
 };
 
-struct Material {
-    std::string name;
-    Vec3 ka{0.1f};              // ambient, multiplies the scene's ambient light
-    Vec3 kd{0.8f};              // diffuse (Lambert)
-    Vec3 ks{0.0f};              // specular highlight
-    float shininess = 32.0f;    // exponent n
+// The coefficients a hit shades with: the local model's and the transport weights. A textured
+// material's coefficients at a hit are a copy of these with ka/kd/ks replaced (no name copied).
+struct SurfaceCoefficients {
+    Vec3 ka{0.1f};            // ambient, multiplies the scene's ambient light
+    Vec3 kd{0.8f};            // diffuse (Lambert)
+    Vec3 ks{0.0f};            // specular highlight
+    float shininess = 32.0f;  // exponent n
     SpecularModel specular_model = SpecularModel::Phong;
-    Vec3 reflect{0.0f};         // perfect mirror weight, seed 001
-    Vec3 transmit{0.0f};        // perfect specular transmission weight, seed 001
-    float ior = 1.0f;           // index of refraction of the inside (outside is 1)
-    MaterialTextures textures;  // none by default: the constant coefficients above
+    Vec3 reflect{0.0f};   // perfect mirror weight, seed 001
+    Vec3 transmit{0.0f};  // perfect specular transmission weight, seed 001
+    float ior = 1.0f;     // index of refraction of the inside (outside is 1)
 
     bool transmissive() const { return transmit.x > 0.0f || transmit.y > 0.0f || transmit.z > 0.0f; }
     bool reflective() const { return reflect.x > 0.0f || reflect.y > 0.0f || reflect.z > 0.0f; }
+};
+
+struct Material : SurfaceCoefficients {
+    std::string name;
+    MaterialTextures textures;  // none by default: the constant coefficients
 };
 
 }  // namespace rayo

@@ -10,14 +10,14 @@
 namespace rayo {
 
 // Lambert: Kd·(N·L), only for N·L > 0 (seed 000 eq. [18]).
-inline Vec3 lambert_term(const Material& m, const Vec3& normal, const Vec3& to_light) {
+inline Vec3 lambert_term(const SurfaceCoefficients& m, const Vec3& normal, const Vec3& to_light) {
     const float n_dot_l = glm::dot(normal, to_light);
     return n_dot_l > 0.0f ? m.kd * n_dot_l : Vec3(0.0f);
 }
 
 // Specular: Ks·(V·R)^n with R = 2(N·L)N − L (seed 000 eqs. [23]-[24]) or Ks·(N·H)^n with
 // H = (L+V)/|L+V| (eq. [28]). No highlight when the light is below the surface.
-inline Vec3 specular_term(const Material& m, const Vec3& normal, const Vec3& to_light,
+inline Vec3 specular_term(const SurfaceCoefficients& m, const Vec3& normal, const Vec3& to_light,
                           const Vec3& to_eye) {
     const float n_dot_l = glm::dot(normal, to_light);
     // No highlight to compute for Ks = 0 (NFF's matte surfaces carry exponents like 100000).
@@ -35,7 +35,7 @@ inline Vec3 specular_term(const Material& m, const Vec3& normal, const Vec3& to_
 }
 
 // Diffuse plus specular for one light of radiance `light` (Ii·f(d)): seed 000 eq. [24]/[28].
-inline Vec3 phong_direct(const Material& m, const Vec3& normal, const Vec3& to_light,
+inline Vec3 phong_direct(const SurfaceCoefficients& m, const Vec3& normal, const Vec3& to_light,
                          const Vec3& to_eye, const Vec3& light) {
     return light * (lambert_term(m, normal, to_light) +
                     specular_term(m, normal, to_light, to_eye));

@@ -20,24 +20,17 @@ const Texture* texture_at(const std::vector<Texture>& textures, int32_t id) {
 }
 
 // The effective coefficients of a textured material at `position` (seed 003 ch. 3): each textured
-// ka/kd/ks replaced by its texture's colour there. Copies every other field but the name, so a
-// hit allocates nothing.
-Material material_at(const Material& m, const std::vector<Texture>& textures,
-                     const Vec3& position) {
-    Material local;
+// ka/kd/ks replaced by its texture's colour there.
+SurfaceCoefficients material_at(const Material& m, const std::vector<Texture>& textures,
+                                const Vec3& position) {
+    SurfaceCoefficients local = m;
     const Texture* ka = texture_at(textures, m.textures.ka);
     const Texture* kd = texture_at(textures, m.textures.kd);
     const Texture* ks = texture_at(textures, m.textures.ks);
-    local.kd = kd ? kd->color(position) : m.kd;
+    if (kd) local.kd = kd->color(position);
     // ka often shares kd's texture (the default ka = 0.1 × kd): evaluate it once.
-    local.ka = ka ? m.textures.ka_scale * (ka == kd ? local.kd : ka->color(position)) : m.ka;
-    local.ks = ks ? ks->color(position) : m.ks;
-    local.shininess = m.shininess;
-    local.specular_model = m.specular_model;
-    local.reflect = m.reflect;
-    local.transmit = m.transmit;
-    local.ior = m.ior;
-    local.textures = m.textures;
+    if (ka) local.ka = m.textures.ka_scale * (ka == kd ? local.kd : ka->color(position));
+    if (ks) local.ks = ks->color(position);
     return local;
 }
 
@@ -88,20 +81,11 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(const Ray& ray,
 bool WhittedIntegrator::light_sample(const ShadingPoint& p, const SurfaceHit& hit,
                                      const Light& light, Ray& shadow, Vec3& to_light,
                                      Vec3& light_radiance) const {
-    float light_distance;
-    if (const auto* point = std::get_if<PointLight>(&light)) {
-        const Vec3 offset = point->position - hit.position;
-        light_distance = glm::length(offset);
-        if (!(light_distance > 0.0f)) return false;
-        to_light = offset / light_distance;
-        light_radiance =
-            point->color * point->intensity * point->attenuation.factor(light_distance);
-    } else {
-        const auto& directional = std::get<DirectionalLight>(light);
-        to_light = -directional.direction;
-        light_distance = std::numeric_limits<float>::infinity();
-        light_radiance = directional.color * directional.intensity;
-    }
+    LightSample sample;
+    if (!sample_light(light, hit.position, glm::vec2(0.5f), sample)) return false;
+    to_light = sample.direction;
+    const float light_distance = sample.distance;
+    light_radiance = sample.radiance / sample.pdf;
     // Lights behind the surface (as seen from the arriving side) contribute nothing.
     if (glm::dot(p.normal, to_light) <= 0.0f || glm::dot(p.facing_geometric, to_light) <= 0.0f) {
         return false;
@@ -137,7 +121,7 @@ Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth, 
 Vec3 WhittedIntegrator::add_transport(const Ray& ray, const SurfaceHit& hit,
                                       const ShadingPoint& p, int depth, const Vec3& weight,
                                       const Vec3& color, RayCounters& counters) const {
-    const Material& material = p.material();
+    const SurfaceCoefficients& material = p.material();
     if (!material.reflective() && !material.transmissive()) return color;
     if (depth >= m_settings.max_depth) {
         ++counters.depth_cut;

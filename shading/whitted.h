@@ -31,12 +31,12 @@ private:
     // What shading a hit needs, computed once: the side the ray arrived on, normals after
     // bump mapping, the (textured) material, the spawned-ray origin.
     struct ShadingPoint {
-        const Material* base = nullptr;   // the scene's material
-        std::optional<Material> textured;  // its coefficients at the hit, when it has textures
+        const SurfaceCoefficients* base = nullptr;    // the scene's material
+        std::optional<SurfaceCoefficients> textured;  // its coefficients at the hit, if textured
         bool entering = true;
         Vec3 facing_geometric{0.0f}, normal{0.0f}, to_eye{0.0f}, shadow_origin{0.0f};
         // Not a stored pointer to `textured`: points are copied and must stay valid.
-        const Material& material() const { return textured ? *textured : *base; }
+        const SurfaceCoefficients& material() const { return textured ? *textured : *base; }
     };
     ShadingPoint prepare(const Ray& ray, const SurfaceHit& hit) const;
     // The shadow ray toward `light`, the unit direction to it and its radiance at the hit;

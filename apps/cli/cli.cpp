@@ -50,7 +50,7 @@ render options:
   --spp N                  samples per pixel, stratified jitter [scene's, default 1]
   --threads N              worker threads [all cores]
   --max-depth N            maximum reflection/refraction depth, 0..64 [scene's, default 5]
-  --tile-size N            tile side in pixels [16]
+  --tile-size N            tile side in pixels [64]
   --sphere-method M        auto (default), user, bruteforce, embree-point, mesh:N (N 0..7:
                            20·4^N triangles per sphere)
   --sphere-math P          stable (default), seed (seed 000's algebraic form), double
@@ -153,7 +153,12 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
         } else if (a == "--max-depth") {
             r.max_depth = parse_int(a, cursor.value(), 0, kMaxDepthLimit);
         } else if (a == "--tile-size") {
-            r.tile_size = parse_int(a, cursor.value(), 1, 4096);
+            const std::string& text = cursor.value();
+            r.tile_size = parse_int(a, text, kCoherentBlock, kMaxTileSize);
+            if (!valid_tile_size(*r.tile_size)) {
+                throw UsageError(a + ": expected " + tile_size_expectation() + ", got '" + text +
+                                 "'");
+            }
         } else if (a == "--sphere-math") {
             const std::string& m = cursor.value();
             r.sphere_math = parse_sphere_math(m);

@@ -486,7 +486,11 @@ void SceneParser::parse_render(const Json& value, const std::string& pointer,
     s.whitted.min_contribution =
         real_or(value, pointer, "min_contribution", s.whitted.min_contribution, Bound::NonNegative);
     if (const Json* v = find(value, "tile_size")) {
-        s.tile_size = integer(*v, child(pointer, "tile_size"), 1, 4096);
+        s.tile_size = integer(*v, child(pointer, "tile_size"), kCoherentBlock, kMaxTileSize);
+        if (!valid_tile_size(s.tile_size)) {
+            fail(child(pointer, "tile_size"),
+                 "expected " + tile_size_expectation() + ", got " + describe(*v));
+        }
     }
     if (const Json* v = find(value, "sphere_math")) {
         s.sphere_math = *parse_sphere_math(

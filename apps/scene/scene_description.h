@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/scene.h"
-#include "core/image/image_output.h"
+#include "core/tile_grid.h"
 #include "core/sphere_method.h"
 #include "shading/shading_scene.h"
 #include "shading/whitted.h"
@@ -15,7 +15,7 @@ namespace rayo {
 
 struct RenderSettings {
     int spp = 1;
-    int tile_size = 16;
+    int tile_size = kDefaultTileSize;  // core/tile_grid.h
     SphereMath sphere_math = SphereMath::Stable;
     SphereRepresentation spheres{SphereMethod::Auto};  // --sphere-method; auto by default
     float max_error_px = 0.5f;                         // auto's error budget, in pixels

@@ -401,8 +401,9 @@ TEST_F(BadInputCli, FlagValuesCliTestDoesNotCover) {
         const char* expected;
     };
     const Flag flags[] = {
-        {"--tile-size 0", "--tile-size: expected an integer in [1, 4096], got '0'"},
-        {"--tile-size 5000", "--tile-size: expected an integer in [1, 4096]"},
+        {"--tile-size 0", "--tile-size: expected an integer in [16, 4096], got '0'"},
+        {"--tile-size 5000", "--tile-size: expected an integer in [16, 4096]"},
+        {"--tile-size 24", "--tile-size: expected a multiple of 16 in [16, 4096], got '24'"},
         {"--threads 5000", "--threads: expected an integer in [1, 4096]"},
         {"--spp 70000", "--spp: expected an integer in [1, 65536]"},
         {"--max-depth -1", "--max-depth: expected an integer in [0, 64], got '-1'"},

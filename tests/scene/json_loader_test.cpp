@@ -192,7 +192,7 @@ TEST(JsonLoaderDefaults, MinimalSceneGetsDocumentedDefaults) {
     EXPECT_EQ(d.settings.spp, 1);
     EXPECT_EQ(d.settings.whitted.max_depth, 5);
     EXPECT_EQ(d.settings.whitted.min_contribution, 1e-3f);
-    EXPECT_EQ(d.settings.tile_size, 16);
+    EXPECT_EQ(d.settings.tile_size, 64);
     EXPECT_EQ(d.settings.sphere_math, SphereMath::Stable);
     expect_vec3(d.shading.background, 0, 0, 0);
     expect_vec3(d.shading.ambient_light, 1, 1, 1);

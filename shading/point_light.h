@@ -1,0 +1,45 @@
+#pragma once
+// A point light with colour, intensity and distance attenuation (seed 000: f(d) = 1/(d + d0) or
+// 1/(a0 + a1·d + a2·d²); seed 003 eq. 2.2 clamps to 1).
+#include <algorithm>
+
+#include "shading/light_sample.h"
+
+namespace rayo {
+
+struct Attenuation {
+    enum class Kind { None, Linear, Quadratic };
+    Kind kind = Kind::None;
+    float d0 = 0.0f;                        // Linear: 1/(d + d0)
+    float a0 = 1.0f, a1 = 0.0f, a2 = 0.0f;  // Quadratic: min(1, 1/(a0 + a1·d + a2·d²))
+
+    float factor(float distance) const {
+        switch (kind) {
+            case Kind::Linear: return 1.0f / (distance + d0);
+            case Kind::Quadratic:
+                return std::min(1.0f, 1.0f / (a0 + a1 * distance + a2 * distance * distance));
+            case Kind::None: break;
+        }
+        return 1.0f;
+    }
+};
+
+struct PointLight {
+    Vec3 position{0.0f};
+    Vec3 color{1.0f};
+    float intensity = 1.0f;
+    Attenuation attenuation;
+
+    // False at the light's own position (no direction).
+    bool sample(const Vec3& point, const glm::vec2& /*u*/, LightSample& out) const {
+        const Vec3 offset = position - point;
+        out.distance = glm::length(offset);
+        if (!(out.distance > 0.0f)) return false;
+        out.direction = offset / out.distance;
+        out.radiance = color * intensity * attenuation.factor(out.distance);
+        out.pdf = 1.0f;
+        return true;
+    }
+};
+
+}  // namespace rayo
