@@ -1,4 +1,4 @@
-// Throughput of every sphere method (issue 3 §4): Mrays/s per method × sphere count (10 … 10⁶)
+// Throughput of every sphere method (docs/sphere-methods.md): Mrays/s per method × sphere count (10 … 10⁶)
 // × ray kind, plus BVH build time and Embree bytes per primitive.
 //   Kinds: Camera    256×256 pinhole rays in 8×8 coherent batches (Accel::intersect_coherent)
 //          Random    incoherent rays, random origins in the box and random directions

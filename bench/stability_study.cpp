@@ -1,4 +1,4 @@
-// The sphere stability study as a program (issue 3 §3; docs/stability.md): every sweep of
+// The sphere stability study as a program (docs/stability.md): every sweep of
 // core/sphere_stability — distance/radius, grazing rays, origins on the surface, sphere scale and
 // position, the breaking point, and the spawned-ray offsets — written as CSV.
 //   build/stability_study [DIR]   (default: the current directory)

@@ -1,4 +1,4 @@
-# libFuzzer targets (issue 5): one executable per scene reader, fuzz/<reader>_fuzz.cpp, built with
+# libFuzzer targets: one executable per scene reader, fuzz/<reader>_fuzz.cpp, built with
 # clang's -fsanitize=fuzzer. The loaders (rayo_scene) get coverage instrumentation so libFuzzer can
 # steer; core and shading do not, which keeps the sanitizer test run that shares this build fast.
 # Each fuzzer is a ctest entry `fuzz_<reader>` that runs for RAYO_FUZZ_SECONDS over a copy of its

@@ -56,7 +56,7 @@ Camera Camera::create(const CameraDesc& desc, const std::string& where) {
     camera.m_eye = desc.eye;
     // seed 002: VIEW = (LOOKAT − EYE)/|…|. HORZ is VIEW × UP rather than the seed's UP × VIEW:
     // the seed's frame is left-handed, and in rayo's right-handed world that order would mirror
-    // the image (SEEDS.md 002).
+    // the image (seed 002).
     camera.m_view = glm::normalize(to_target);
     const Vec3 right = glm::cross(camera.m_view, desc.up);
     const float up_length = glm::length(desc.up);

@@ -21,7 +21,7 @@ struct CameraDesc {
     int width = 100;
     int height = 100;
     // NFF convention: `angle` spans the centres of the first and last pixel rows/columns,
-    // not the image edges (DESIGN.md, NFF conventions).
+    // not the image edges (docs/nff.md).
     bool fov_spans_pixel_centres = false;
 };
 

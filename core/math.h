@@ -1,6 +1,6 @@
 #pragma once
 // Vector types used throughout rayo. Float in the hot path (Embree is float); the double types
-// are for reference implementations and tests (DESIGN.md, "Hot-path rules").
+// are for reference implementations and tests (docs/architecture.md, "Hot-path rules").
 #include <glm/glm.hpp>
 
 namespace rayo {

@@ -1,6 +1,6 @@
 #pragma once
 // Stateless random numbers: every value is a hash of (pixel, sample, dimension, frame), so the
-// image does not depend on the thread count or tile order (DESIGN.md "Hot-path rules").
+// image does not depend on the thread count or tile order (docs/architecture.md "Hot-path rules").
 #include <cstdint>
 
 #include <glm/vec2.hpp>

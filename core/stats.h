@@ -1,6 +1,6 @@
 #pragma once
 // Ray statistics, counted per thread without sharing and merged after the render
-// (DESIGN.md "Hot-path rules").
+// (docs/architecture.md "Hot-path rules").
 #include <cstdint>
 
 namespace rayo {

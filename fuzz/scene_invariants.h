@@ -1,5 +1,5 @@
 #pragma once
-// The fuzzers' oracle (issue 5): what a scene loader promises about a scene it accepted. Bad input
+// The fuzzers' oracle: what a scene loader promises about a scene it accepted. Bad input
 // must be refused with rayo::InputError; anything accepted must be finite, in range and safe to
 // index, or the renderer would crash or write NaN. A violation aborts so libFuzzer keeps the input.
 #include <cmath>

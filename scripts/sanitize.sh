@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Sanitizer and fuzzing checks (issue 5), run by .ci/run after the normal test suite:
+# Sanitizer and fuzzing checks, run by .ci/run after the normal test suite:
 #   asan  clang AddressSanitizer + UndefinedBehaviorSanitizer (CMakePresets.json "asan"): the whole
 #         test suite, plus each libFuzzer target (fuzz/) for RAYO_FUZZ_SECONDS (default 20) over a
 #         copy of its seed corpus; crashing inputs land in build-asan/fuzz/<reader>/artifacts/.

@@ -58,7 +58,7 @@ private:
 
 // Origin of a ray leaving `hit` on the side `side_normal` points to: offset along the
 // geometric normal by an amount that scales with the hit position's magnitude and the object's
-// size (DESIGN.md "Numerics": a fixed epsilon fails once coordinates reach ~1e3).
+// size (docs/architecture.md "Numerics": a fixed epsilon fails once coordinates reach ~1e3).
 Vec3 offset_ray_origin(const SurfaceHit& hit, const Vec3& side_normal);
 
 }  // namespace rayo

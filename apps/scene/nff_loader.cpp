@@ -209,7 +209,7 @@ void require_non_negative(const Vec3& v, const Where& where, const char* what) {
 // The `f` line's eight numbers, kept to recognise a repeat of the previous `f`.
 using NffMaterialValues = std::array<float, 8>;
 
-// DESIGN.md "NFF conventions" (reference reader): ambient Ka = 0.1·colour (Ia = 1), diffuse
+// docs/nff.md (reference reader): ambient Ka = 0.1·colour (Ia = 1), diffuse
 // Kd·colour, white Phong highlight Ks·(R·V)^Shine, mirror reflection Ks, transmission T.
 Material nff_material(const NffMaterialValues& f, const std::string& name) {
     const Vec3 colour(f[0], f[1], f[2]);
@@ -538,7 +538,7 @@ class NffParser {
         }
         const uint32_t material = current_material();
         // Polygons of transmissive materials are two-sided; the others are one-sided by their
-        // winding (DESIGN.md "NFF conventions").
+        // winding (docs/nff.md).
         const bool two_sided = m_out.shading.materials[material].transmissive();
         TriangleMesh& mesh = m_meshes[(patch ? 2 : 0) + (two_sided ? 1 : 0)];
         if (!mesh.add_convex_polygon(m_vertices, m_normals, material)) {

@@ -1,7 +1,7 @@
 #pragma once
 // Reader for Eric Haines' Neutral File Format (NFF, the format of the Standard Procedural
 // Databases): fills a SceneDescription following the reference reader's conventions
-// (DESIGN.md "Scene formats"; the full mapping and error list are in docs/nff.md).
+// (docs/architecture.md "Scene formats"; the full mapping and error list are in docs/nff.md).
 #include <cstddef>
 #include <string>
 

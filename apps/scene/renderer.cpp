@@ -67,7 +67,7 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     check_material_ids(description);
     RenderResult result;
     result.threads = threads > 0 ? threads : default_thread_count();
-    // Limits TBB and Embree's BVH build alike (DESIGN.md: no task_scheduler_init in oneTBB).
+    // Limits TBB and Embree's BVH build alike (docs/architecture.md: no task_scheduler_init in oneTBB).
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                               static_cast<size_t>(result.threads));
 

@@ -1,6 +1,6 @@
 #pragma once
 // `rayo bench accuracy -o DIR`: the speed-against-accuracy study of the sphere methods
-// (issue 3 §4). Renders a fixed set of scenes with every method, tessellation level and
+// (docs/sphere-methods.md). Renders a fixed set of scenes with every method, tessellation level and
 // precision, measures each frame's time and its error against the double-precision brute-force
 // render, writes CSV and draws the charts with gnuplot (PNG and SVG).
 #include <iosfwd>

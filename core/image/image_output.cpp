@@ -1,5 +1,5 @@
 // Film -> file. EXR keeps the scene-linear film untouched; PNG/TIFF/JPEG go through an OCIO
-// display/view transform (DESIGN.md "Output and colour"). Every format is written to a
+// display/view transform (docs/architecture.md "Output and colour"). Every format is written to a
 // temporary file in the target directory and renamed onto the final path.
 #include "core/image/image_output.h"
 

@@ -18,7 +18,7 @@ struct TriangleMesh {
     std::vector<uint32_t> materials;  // one per triangle
     // Two-sided meshes are hit from both sides (shading faces the normal forward). A one-sided
     // mesh is seen only from the side its counter-clockwise winding faces (NFF polygons without
-    // transmission, DESIGN.md "NFF conventions"); back-facing hits are ignored by every ray.
+    // transmission, docs/nff.md); back-facing hits are ignored by every ray.
     bool one_sided = false;
 
     size_t triangle_count() const { return triangles.size(); }

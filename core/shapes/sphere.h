@@ -3,7 +3,7 @@
 //  - SphereMath::Seed: the seed's algebraic form B = 2·Rd·(R0−Sc), C = |R0−Sc|² − Sr²,
 //    D = B² − 4C, t = (−B ∓ √D)/2. Kept for comparison: it cancels catastrophically for small
 //    spheres far from the origin of the ray.
-//  - SphereMath::Stable (default, DESIGN.md "Numerics"): Δ from the perpendicular distance
+//  - SphereMath::Stable (default, docs/architecture.md "Numerics"): Δ from the perpendicular distance
 //    r² − |f − (f·d)d|², roots via q = −(b + sign(b)√Δ), t = c/q and t = q, c = (|f|−r)(|f|+r).
 //  - SphereMath::Double: the stable form evaluated in double precision, t rounded to float at
 //    the end: the accuracy reference of the analytic-vs-BVH comparison.

@@ -1,4 +1,4 @@
-// The catalogue of bad input (issue 5), end to end through the `rayo` executable (RAYO_CLI_PATH):
+// The catalogue of bad input, end to end through the `rayo` executable (RAYO_CLI_PATH):
 // every case must exit non-zero, print "rayo: error: <place>: <what was expected>" with the place
 // as file:line (NFF, OBJ), file:line:column (JSON syntax) or file#/json/pointer, and leave no
 // file behind (no image, no temporary). The loaders' own tests (nff_loader_test.cpp,

@@ -197,7 +197,7 @@ TEST(Camera, BothFovsGivenAreHonouredIndependently) {
 }
 
 TEST(Camera, NffFovSpansPixelCentres) {
-    // NFF `angle` (DESIGN.md, NFF conventions): the angle between the rays through the centres
+    // NFF `angle` (docs/nff.md): the angle between the rays through the centres
     // of the first and last rows (and columns) equals the fov.
     CameraDesc desc = front_camera(5, 5);
     desc.vfov_degrees = 40.0f;

@@ -13,7 +13,7 @@ namespace {
 
 TEST(Sampling, SameInputsGiveTheSameValue) {
     // Stateless: the value is a function of (x, y, sample, dimension, frame) only, whatever was
-    // drawn before (DESIGN.md: output must not depend on thread count or tile order).
+    // drawn before (docs/architecture.md: output must not depend on thread count or tile order).
     const float first = sample_uniform(17, 42, 3, 1, 0);
     for (int i = 0; i < 100; ++i) sample_uniform(uint32_t(i), 7, 0, 0);
     EXPECT_EQ(sample_uniform(17, 42, 3, 1, 0), first);

@@ -34,7 +34,7 @@ void expect_near3(const glm::vec<3, T>& actual, double x, double y, double z, do
 TYPED_TEST(SphereWorkedExample, OriginOutsideHitsTheNearRoot) {
     using T = TypeParam;
     using V = glm::vec<3, T>;
-    // SEEDS.md 000, worked example 1: R0 = (1,−2,−1), Rd = (1,2,4)/√21, Sc = (3,0,5), Sr = 3
+    // seed 000, worked example 1: R0 = (1,−2,−1), Rd = (1,2,4)/√21, Sc = (3,0,5), Sr = 3
     // -> t = 3.7435, P = (1.8169, −0.3662, 2.2676), n = (−0.3944, −0.1221, −0.9108)
     // (double-precision values: t = 3.743477, P = (1.816894, −0.366213, 2.267575)).
     const V origin(1, -2, -1), direction = glm::normalize(V(1, 2, 4)), center(3, 0, 5);
@@ -56,7 +56,7 @@ TYPED_TEST(SphereWorkedExample, OriginOutsideHitsTheNearRoot) {
 TYPED_TEST(SphereWorkedExample, OriginInsideHitsTheFarRootWithFlippedNormal) {
     using T = TypeParam;
     using V = glm::vec<3, T>;
-    // SEEDS.md 000, worked example 2: R0 = (3,−2,2), Rd = (1,2,3)/√14, Sc = (4,1,3), Sr = 4
+    // seed 000, worked example 2: R0 = (3,−2,2), Rd = (1,2,3)/√14, Sc = (4,1,3), Sr = 4
     // -> t0 = −0.812 rejected, t = t1 = 6.1573, P = (4.6456, 1.2912, 6.9368),
     // n = −(0.1614, 0.0728, 0.9842) (flipped: the origin is inside).
     const V origin(3, -2, 2), direction = glm::normalize(V(1, 2, 3)), center(4, 1, 3);
@@ -244,7 +244,7 @@ TEST(SphereAccuracy, SeedFormLosesHitsAtDistance1e4) {
 
 TEST(SphereAccuracy, HitsAndMissesAtDistance1e4) {
     // Rays within 1.5 radii of the centre: 5,880 of 10,000 hit in the double reference.
-    // Measured: seed form 5,289 mismatches (52.9%; DESIGN.md quotes ~45%); stable form 2, both
+    // Measured: seed form 5,289 mismatches (52.9%; the design notes quote ~45%); stable form 2, both
     // within 1e-2 of tangency (|r² − p²|), where float rounding of the ray itself decides.
     const FarSphereStats s = measure_far_sphere(1e4, 1.5, 10000, 7);
     EXPECT_GT(s.reference_hits, 5000);
@@ -258,7 +258,7 @@ TEST(SphereAccuracy, HitsAndMissesAtDistance1e4) {
 
 TEST(SphereAccuracy, HitsAndMissesAtDistance1e3) {
     // Distance/radius 1e3, rays within 1.5 radii of the centre (5,881 reference hits).
-    // Measured: seed form 557 mismatches (5.6%; DESIGN.md says ~1%, which matches our
+    // Measured: seed form 557 mismatches (5.6%; the design notes say ~1%, which matches our
     // near-centre rays: 26 of 10,000 within 0.9 radii); stable form 0, max relative error of t
     // 1.0e-6 (near-tangent rays, where t is ill-conditioned). Asserted with margin.
     const FarSphereStats s = measure_far_sphere(1e3, 1.5, 10000, 7);

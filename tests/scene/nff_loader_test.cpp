@@ -1,5 +1,5 @@
 // Tests of the NFF reader (apps/nff_loader.h): entity mapping per the reference reader's
-// conventions (DESIGN.md "NFF conventions"), geometry values, and every error with its line.
+// conventions (docs/nff.md), geometry values, and every error with its line.
 #include "apps/scene/nff_loader.h"
 
 #include <gtest/gtest.h>
