@@ -541,11 +541,13 @@ class NffParser {
         // winding (DESIGN.md "NFF conventions").
         const bool two_sided = m_out.shading.materials[material].transmissive();
         TriangleMesh& mesh = m_meshes[(patch ? 2 : 0) + (two_sided ? 1 : 0)];
-        if (!mesh.add_convex_polygon(m_vertices, m_normals, material)) {
+        // NFF polygons may be concave (only the first two edges must form a convex angle).
+        if (!mesh.add_polygon(m_vertices, m_normals, material)) {
             if (patch) {
                 // Tessellated surfaces collapse at poles and seams (SPD teapot_1 has four such
                 // patches): skip them, as they cover no area.
-                m_out.warnings.push_back(std::string(where) + ": degenerate patch (zero area) skipped");
+                m_out.warnings.push_back(std::string(where) +
+                                         ": degenerate patch (zero area) skipped");
                 m_out.skipped_triangles += m_vertices.size() - 2;
                 return;
             }
