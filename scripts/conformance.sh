@@ -11,7 +11,9 @@
 #    more than 5 % of that mean. The share of pixels off must stay at or under the scene's
 #    threshold (table below; docs/nff.md explains every scene above 1 % and how the thresholds
 #    were set). POV-Ray is installed through scripts/setup.sh (RAYO_SETUP_EXTRAS=povray).
-# Renders run RAYO_JOBS (default 2) scenes at a time, one thread each.
+# Renders run RAYO_JOBS (default 2) scenes at a time, one thread each. With
+# RAYO_CONFORMANCE_FIGURES=DIR, each scene's rayo | POV-Ray | 4×|difference| is saved in DIR as
+# NAME.png (sRGB) to look at.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 spd="${RAYO_SPD_DIR:-$root/../shared/spd}"
@@ -139,6 +141,13 @@ for nff in "$spd"/*.nff; do
     continue
   fi
   read -r off mean_error psnr <<<"$result"
+  if [[ -n "${RAYO_CONFORMANCE_FIGURES:-}" ]]; then
+    mkdir -p "$RAYO_CONFORMANCE_FIGURES"
+    oiiotool "$out/$name.rayo.exr" --ch R,G,B -o "$out/$name.rgb.exr"
+    oiiotool "$out/$name.rgb.exr" "$out/$name.pov.exr" --sub --abs --mulc 4 -o "$out/$name.diff.exr"
+    oiiotool "$out/$name.rgb.exr" "$out/$name.pov.exr" "$out/$name.diff.exr" --mosaic:pad=4 3x1 \
+      --colorconvert linear sRGB -d uint8 -o "$RAYO_CONFORMANCE_FIGURES/$name.png"
+  fi
   if ((status == 1)); then
     printf "%-10s %8s %10s %10s %8s   FAIL: more than %s %% off\n" "$name" "$off" \
       "$mean_error" "$psnr" "$limit" "$limit"
