@@ -50,6 +50,8 @@ render options:
   --spp N                  samples per pixel, stratified jitter [scene's, default 1]
   --threads N              worker threads [all cores]
   --max-depth N            maximum reflection/refraction depth, 0..64 [scene's, default 5]
+  --nff-light-intensity X  intensity of each NFF light without a colour, a number >= 0
+                           [1/sqrt(number of lights), the SPD's rule; 1 gives unit lights]
   --tile-size N            tile side in pixels [64]
   --sphere-method M        auto (default), user, bruteforce, embree-point, mesh:N (N 0..7:
                            20·4^N triangles per sphere)
@@ -128,6 +130,7 @@ struct RenderArgs {
     std::optional<SphereMath> sphere_math;
     std::optional<SphereRepresentation> sphere_method;
     std::optional<float> max_error_px;
+    SceneLoadOptions load_options;
     bool flat_spheres = false;
     bool single_rays = false;
     OutputOptions output_options;
@@ -175,6 +178,9 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             }
         } else if (a == "--max-error-px") {
             r.max_error_px = static_cast<float>(parse_number(a, cursor.value(), 1e-6, 1e6));
+        } else if (a == "--nff-light-intensity") {
+            r.load_options.nff.light_intensity =
+                static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
         } else if (a == "--flat-spheres") {
             r.flat_spheres = true;
         } else if (a == "--single-rays") {
@@ -307,7 +313,8 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
     const RenderArgs args = parse_render_args(arg_list);
     const auto total_start = std::chrono::steady_clock::now();
     auto start = total_start;
-    SceneDescription d = args.scene_path ? load_scene_file(*args.scene_path) : make_default_scene();
+    SceneDescription d = args.scene_path ? load_scene_file(*args.scene_path, args.load_options)
+                                         : make_default_scene();
     const double parse_s = seconds_since(start);
     if (!args.quiet) {
         for (const std::string& w : d.warnings) err << "rayo: warning: " << w << "\n";

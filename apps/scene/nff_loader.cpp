@@ -12,6 +12,7 @@
 #include <optional>
 #include <string_view>
 #include <system_error>
+#include <variant>
 #include <vector>
 
 #include "core/camera.h"
@@ -244,8 +245,9 @@ int view_keyword_index(std::string_view keyword) {
 
 class NffParser {
   public:
-    NffParser(const std::string& text, const std::string& source, NffLoadInfo* info)
-        : m_reader(text, source), m_info(info) {
+    NffParser(const std::string& text, const std::string& source, NffLoadInfo* info,
+              const NffOptions& options)
+        : m_reader(text, source), m_info(info), m_options(options) {
         m_out.source = source;
         m_out.settings.whitted.max_depth = 5;  // the project's default for NFF scenes
     }
@@ -288,6 +290,7 @@ class NffParser {
         for (auto& mesh : m_meshes) {
             if (!mesh.triangles.empty()) m_out.scene.meshes.push_back(std::move(mesh));
         }
+        scale_uncoloured_lights();
         return std::move(m_out);
     }
 
@@ -396,9 +399,23 @@ class NffParser {
             light.color = parse_vec3(tokens, 4, where, "light colour");
             require_non_negative(light.color, where, "light colour");
         }
-        light.intensity = 1.0f;
+        light.intensity = 1.0f;  // uncoloured lights are scaled once all are known
         light.attenuation.kind = Attenuation::Kind::None;
+        if (tokens.count == 4) m_uncoloured_lights.push_back(m_out.shading.lights.size());
         m_out.shading.lights.emplace_back(light);
+    }
+
+    // Each of the N lights without a colour gets intensity 1/sqrt(N) (N counts every light),
+    // or the caller's NffOptions::light_intensity: the SPD's rule (SPD README: the generators
+    // scale the lights of every format but NFF by 1/sqrt(N); an NFF reader does it itself).
+    void scale_uncoloured_lights() {
+        const size_t n = m_out.shading.lights.size();
+        if (n == 0) return;
+        const float intensity = m_options.light_intensity.value_or(
+            static_cast<float>(1.0 / std::sqrt(static_cast<double>(n))));
+        for (const size_t i : m_uncoloured_lights) {
+            std::get<PointLight>(m_out.shading.lights[i]).intensity = intensity;
+        }
     }
 
     void parse_material(const Tokens& tokens, const Line& line) {
@@ -541,11 +558,13 @@ class NffParser {
         // winding (docs/nff.md).
         const bool two_sided = m_out.shading.materials[material].transmissive();
         TriangleMesh& mesh = m_meshes[(patch ? 2 : 0) + (two_sided ? 1 : 0)];
-        if (!mesh.add_convex_polygon(m_vertices, m_normals, material)) {
+        // NFF polygons may be concave (only the first two edges must form a convex angle).
+        if (!mesh.add_polygon(m_vertices, m_normals, material)) {
             if (patch) {
                 // Tessellated surfaces collapse at poles and seams (SPD teapot_1 has four such
                 // patches): skip them, as they cover no area.
-                m_out.warnings.push_back(std::string(where) + ": degenerate patch (zero area) skipped");
+                m_out.warnings.push_back(std::string(where) +
+                                         ": degenerate patch (zero area) skipped");
                 m_out.skipped_triangles += m_vertices.size() - 2;
                 return;
             }
@@ -555,6 +574,8 @@ class NffParser {
 
     LineReader m_reader;
     NffLoadInfo* m_info;
+    NffOptions m_options;
+    std::vector<size_t> m_uncoloured_lights;  // indices into m_out.shading.lights
     SceneDescription m_out;
     size_t m_view_line = 0;
     std::optional<uint32_t> m_material;
@@ -582,13 +603,19 @@ struct FileCloser {
 }  // namespace
 
 SceneDescription load_nff_string(const std::string& text, const std::string& source_name,
-                                 NffLoadInfo* info) {
+                                 NffLoadInfo* info, const NffOptions& options) {
     if (info) *info = NffLoadInfo{};
-    NffParser parser(text, source_name, info);
+    if (options.light_intensity &&
+        !(std::isfinite(*options.light_intensity) && *options.light_intensity >= 0.0f)) {
+        throw InputError(source_name, "NFF light intensity must be a finite number >= 0, got " +
+                                          std::to_string(*options.light_intensity));
+    }
+    NffParser parser(text, source_name, info, options);
     return parser.parse();
 }
 
-SceneDescription load_nff_file(const std::string& path, NffLoadInfo* info) {
+SceneDescription load_nff_file(const std::string& path, NffLoadInfo* info,
+                               const NffOptions& options) {
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file) {
         throw InputError(path, std::string("cannot open: ") + std::strerror(errno));
@@ -611,7 +638,7 @@ SceneDescription load_nff_file(const std::string& path, NffLoadInfo* info) {
         }
         if (got < buffer.size()) break;
     }
-    return load_nff_string(text, path, info);
+    return load_nff_string(text, path, info, options);
 }
 
 }  // namespace rayo

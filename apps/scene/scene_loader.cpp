@@ -10,12 +10,12 @@
 
 namespace rayo {
 
-SceneDescription load_scene_file(const std::string& path) {
+SceneDescription load_scene_file(const std::string& path, const SceneLoadOptions& options) {
     std::string extension = std::filesystem::path(path).extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (extension == ".json") return load_json_file(path);
-    if (extension == ".nff") return load_nff_file(path);
+    if (extension == ".nff") return load_nff_file(path, nullptr, options.nff);
     throw InputError(path, "unknown scene format '" + extension +
                                "': expected a .json (rayo) or .nff (Neutral File Format) file");
 }

@@ -3,10 +3,16 @@
 // Databases). Errors are InputErrors naming the file and place.
 #include <string>
 
+#include "apps/scene/nff_loader.h"
 #include "apps/scene/scene_description.h"
 
 namespace rayo {
 
-SceneDescription load_scene_file(const std::string& path);
+// Per-format reading choices; each applies only to files of its format.
+struct SceneLoadOptions {
+    NffOptions nff;
+};
+
+SceneDescription load_scene_file(const std::string& path, const SceneLoadOptions& options = {});
 
 }  // namespace rayo

@@ -2,11 +2,14 @@
 
 #include <cmath>
 
-namespace rayo {
+#include "core/polygon_triangulation.h"
 
-bool TriangleMesh::add_convex_polygon(const std::vector<Vec3>& vertices,
-                                      const std::vector<Vec3>& vertex_normals,
-                                      uint32_t material) {
+namespace rayo {
+namespace {
+
+// The checks both add_*_polygon make before adding anything.
+bool acceptable_polygon(const std::vector<Vec3>& vertices,
+                        const std::vector<Vec3>& vertex_normals) {
     if (vertices.size() < 3) return false;
     if (!vertex_normals.empty() && vertex_normals.size() != vertices.size()) return false;
     for (const Vec3& v : vertices) {
@@ -17,28 +20,53 @@ bool TriangleMesh::add_convex_polygon(const std::vector<Vec3>& vertices,
     for (size_t i = 1; i + 1 < vertices.size(); ++i) {
         area_vector += glm::cross(vertices[i] - vertices[0], vertices[i + 1] - vertices[0]);
     }
-    if (!(glm::length(area_vector) > 0.0f)) return false;
+    return glm::length(area_vector) > 0.0f;
+}
 
+// Appends the polygon's vertices (and normals) and the given triangles of it, skipping those of
+// zero area.
+void append_polygon(TriangleMesh& mesh, const std::vector<Vec3>& vertices,
+                    const std::vector<Vec3>& vertex_normals,
+                    const std::vector<PolygonTriangle>& polygon_triangles, uint32_t material) {
     const bool with_normals = !vertex_normals.empty();
-    if (with_normals && normals.size() != positions.size()) {
-        normals.resize(positions.size(), Vec3(0.0f));  // earlier flat faces: zero = use Ng
+    if (with_normals && mesh.normals.size() != mesh.positions.size()) {
+        mesh.normals.resize(mesh.positions.size(),
+                            Vec3(0.0f));  // earlier flat faces: zero = use Ng
     }
-    const auto first = static_cast<uint32_t>(positions.size());
+    const auto first = static_cast<uint32_t>(mesh.positions.size());
     for (size_t i = 0; i < vertices.size(); ++i) {
-        positions.push_back(vertices[i]);
+        mesh.positions.push_back(vertices[i]);
         if (with_normals) {
-            normals.push_back(vertex_normals[i]);
-        } else if (!normals.empty()) {
-            normals.push_back(Vec3(0.0f));
+            mesh.normals.push_back(vertex_normals[i]);
+        } else if (!mesh.normals.empty()) {
+            mesh.normals.push_back(Vec3(0.0f));
         }
     }
-    for (size_t i = 1; i + 1 < vertices.size(); ++i) {
-        const Vec3 e1 = vertices[i] - vertices[0], e2 = vertices[i + 1] - vertices[0];
-        if (!(glm::length(glm::cross(e1, e2)) > 0.0f)) continue;  // skip slivers in the fan
-        triangles.push_back({first, first + static_cast<uint32_t>(i),
-                             first + static_cast<uint32_t>(i + 1)});
-        materials.push_back(material);
+    for (const PolygonTriangle& t : polygon_triangles) {
+        const Vec3 e1 = vertices[t[1]] - vertices[t[0]], e2 = vertices[t[2]] - vertices[t[0]];
+        if (!(glm::length(glm::cross(e1, e2)) > 0.0f)) continue;  // skip slivers
+        mesh.triangles.push_back({first + t[0], first + t[1], first + t[2]});
+        mesh.materials.push_back(material);
     }
+}
+
+}  // namespace
+
+bool TriangleMesh::add_convex_polygon(const std::vector<Vec3>& vertices,
+                                      const std::vector<Vec3>& vertex_normals, uint32_t material) {
+    if (!acceptable_polygon(vertices, vertex_normals)) return false;
+    std::vector<PolygonTriangle> fan;
+    for (uint32_t i = 1; i + 1 < vertices.size(); ++i) fan.push_back({0, i, i + 1});
+    append_polygon(*this, vertices, vertex_normals, fan, material);
+    return true;
+}
+
+bool TriangleMesh::add_polygon(const std::vector<Vec3>& vertices,
+                               const std::vector<Vec3>& vertex_normals, uint32_t material) {
+    if (!acceptable_polygon(vertices, vertex_normals)) return false;
+    const std::vector<PolygonTriangle> triangles = triangulate_polygon(vertices);
+    if (triangles.empty()) return false;  // no area in double precision either
+    append_polygon(*this, vertices, vertex_normals, triangles, material);
     return true;
 }
 

@@ -25,8 +25,14 @@ struct TriangleMesh {
     // Appends a convex polygon as a triangle fan; returns false (adding nothing) when it has
     // fewer than three vertices, a non-finite coordinate, a normal count other than zero or
     // one per vertex, or all its triangles are degenerate (zero area).
-    bool add_convex_polygon(const std::vector<Vec3>& vertices, const std::vector<Vec3>& vertex_normals,
-                            uint32_t material);
+    bool add_convex_polygon(const std::vector<Vec3>& vertices,
+                            const std::vector<Vec3>& vertex_normals, uint32_t material);
+    // Appends a simple planar polygon, convex or concave (NFF polygons,
+    // core/polygon_triangulation.h): convex ones as the same fan as add_convex_polygon, others
+    // ear-clipped; triangles keep the polygon's winding and zero-area ones are dropped. Returns
+    // false (adding nothing) in the same cases as add_convex_polygon.
+    bool add_polygon(const std::vector<Vec3>& vertices, const std::vector<Vec3>& vertex_normals,
+                     uint32_t material);
 };
 
 }  // namespace rayo

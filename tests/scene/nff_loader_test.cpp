@@ -11,6 +11,7 @@
 #include <initializer_list>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "core/camera.h"
 #include "core/error.h"
@@ -169,12 +170,87 @@ TEST(NffLoader, LightsArePointLightsWithOptionalColour) {
     ASSERT_NE(tinted, nullptr);
     expect_vec3(white->position, 4.0f, 5.0f, 6.0f);
     expect_vec3(white->color, 1.0f, 1.0f, 1.0f);
-    EXPECT_FLOAT_EQ(white->intensity, 1.0f);
+    EXPECT_FLOAT_EQ(white->intensity, 1.0f / std::sqrt(2.0f));  // 1/sqrt(N), N = 2 lights
     EXPECT_EQ(white->attenuation.kind, Attenuation::Kind::None);
     expect_vec3(tinted->position, -1.0f, -2.0f, -3.0f);
     expect_vec3(tinted->color, 0.5f, 0.25f, 1.0f);
-    EXPECT_FLOAT_EQ(tinted->intensity, 1.0f);
+    EXPECT_FLOAT_EQ(tinted->intensity, 1.0f);  // a colour is used as given
     EXPECT_EQ(tinted->attenuation.kind, Attenuation::Kind::None);
+}
+
+// The SPD's light rule (spd/README.md; DESIGN.md "Scene formats"): each of the N lights gets
+// 1/sqrt(N) unless its `l` line gives a colour.
+std::vector<float> light_intensities(const SceneDescription& d) {
+    std::vector<float> out;
+    for (const Light& light : d.shading.lights)
+        out.push_back(std::get<PointLight>(light).intensity);
+    return out;
+}
+
+TEST(NffLoader, UncolouredLightsGetOneOverSqrtOfTheLightCount) {
+    for (int n : {1, 2, 3, 4, 7}) {
+        std::string text = kView;
+        for (int i = 0; i < n; ++i) text += "l " + std::to_string(i) + " 5 5\n";
+        const std::vector<float> got = light_intensities(load_nff_string(text, "l.nff"));
+        ASSERT_EQ(got.size(), static_cast<size_t>(n));
+        for (float intensity : got) {
+            EXPECT_FLOAT_EQ(intensity, 1.0f / std::sqrt(float(n))) << n << " lights";
+        }
+    }
+    // No lights: nothing to scale, no error.
+    EXPECT_TRUE(load_nff_string(kView, "none.nff").shading.lights.empty());
+}
+
+TEST(NffLoader, ColouredLightsAreUnscaledAndCountInN) {
+    // Four lights, two with a colour: the two plain ones get 1/sqrt(4) = 0.5, the coloured ones
+    // keep intensity 1 and their colour exactly.
+    const SceneDescription d = load_nff_string(
+        kView + lines({"l 0 0 9", "l 1 0 9 0.2 0.4 0.6", "l 2 0 9", "l 3 0 9 1 1 1"}), "c.nff");
+    EXPECT_EQ(light_intensities(d), (std::vector<float>{0.5f, 1.0f, 0.5f, 1.0f}));
+    expect_vec3(std::get<PointLight>(d.shading.lights[1]).color, 0.2f, 0.4f, 0.6f);
+    expect_vec3(std::get<PointLight>(d.shading.lights[0]).color, 1.0f, 1.0f, 1.0f);
+}
+
+TEST(NffLoader, LightIntensityOptionReplacesTheFactor) {
+    const std::string text = kView + lines({"l 0 0 9", "l 1 0 9 0.2 0.4 0.6", "l 2 0 9"});
+    NffOptions unit;
+    unit.light_intensity = 1.0f;  // unit lights, as before the SPD rule
+    EXPECT_EQ(light_intensities(load_nff_string(text, "o.nff", nullptr, unit)),
+              (std::vector<float>{1.0f, 1.0f, 1.0f}));
+    NffOptions dim;
+    dim.light_intensity = 0.25f;
+    EXPECT_EQ(light_intensities(load_nff_string(text, "o.nff", nullptr, dim)),
+              (std::vector<float>{0.25f, 1.0f, 0.25f}));
+    NffOptions off;
+    off.light_intensity = 0.0f;
+    EXPECT_EQ(light_intensities(load_nff_string(text, "o.nff", nullptr, off)),
+              (std::vector<float>{0.0f, 1.0f, 0.0f}));
+    // The file path reaches the same code.
+    TempDir dir;
+    const std::string path = dir.write("o.nff", text);
+    EXPECT_EQ(light_intensities(load_nff_file(path, nullptr, dim)),
+              (std::vector<float>{0.25f, 1.0f, 0.25f}));
+    const std::vector<float> by_default = light_intensities(load_nff_file(path));
+    ASSERT_EQ(by_default.size(), 3u);
+    EXPECT_FLOAT_EQ(by_default[0], 1.0f / std::sqrt(3.0f));
+    EXPECT_FLOAT_EQ(by_default[1], 1.0f);
+    EXPECT_FLOAT_EQ(by_default[2], 1.0f / std::sqrt(3.0f));
+}
+
+TEST(NffLoaderErrors, BadLightIntensityOptionNamesTheSource) {
+    for (float bad : {-1.0f, std::nanf(""), INFINITY}) {
+        NffOptions options;
+        options.light_intensity = bad;
+        try {
+            load_nff_string(kView, "t.nff", nullptr, options);
+            ADD_FAILURE() << "no error for light intensity " << bad;
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.where(), "t.nff");
+            EXPECT_NE(e.message().find("light intensity must be a finite number >= 0"),
+                      std::string::npos)
+                << e.message();
+        }
+    }
 }
 
 TEST(NffLoader, CameraFromViewBlock) {
@@ -272,6 +348,43 @@ TEST(NffLoader, ConvexPolygonBecomesFan) {
     EXPECT_EQ(mesh.triangles[1], (std::array<uint32_t, 3>{0, 2, 3}));
     EXPECT_EQ(mesh.triangles[2], (std::array<uint32_t, 3>{0, 3, 4}));
     expect_vec3(mesh.positions[4], -1.0f, 1.0f, 0.0f);
+}
+
+TEST(NffLoader, ConcavePolygonIsTriangulatedInsideItsOutline) {
+    // An L (area 3) starting at a corner whose fan would cover the notch around (1.5, 1.5):
+    // NFF polygons may be concave (only the first two edges must form a convex angle).
+    const SceneDescription d = load_nff_string(
+        kView + lines({"f 1 1 1 1 0 1 0 1", "p 6", "2 0 0", "2 1 0", "1 1 0", "1 2 0", "0 2 0",
+                       "0 0 0", "f 1 1 1 1 0 1 0.5 1.5", "pp 6", "2 0 1 0 0 1", "2 1 1 1 0 1",
+                       "1 1 1 2 0 1", "1 2 1 3 0 1", "0 2 1 4 0 1", "0 0 1 5 0 1"}),
+        "l.nff");
+    ASSERT_EQ(d.scene.meshes.size(), 2u);  // one-sided polygon, two-sided patch
+    for (const TriangleMesh& mesh : d.scene.meshes) {
+        SCOPED_TRACE(mesh.name);
+        ASSERT_EQ(mesh.triangles.size(), 4u);
+        float area = 0.0f;
+        for (const auto& t : mesh.triangles) {
+            const Vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+            const Vec3 n = glm::cross(b - a, c - a);
+            EXPECT_GT(n.z, 0.0f);  // counter-clockwise seen from +z, like the outline
+            area += 0.5f * glm::length(n);
+            // The notch point (1.5, 1.5) is in no triangle.
+            const auto side = [](Vec3 p, Vec3 q, float x, float y) {
+                return (q.x - p.x) * (y - p.y) - (q.y - p.y) * (x - p.x);
+            };
+            EXPECT_FALSE(side(a, b, 1.5f, 1.5f) > 0 && side(b, c, 1.5f, 1.5f) > 0 &&
+                         side(c, a, 1.5f, 1.5f) > 0);
+        }
+        EXPECT_FLOAT_EQ(area, 3.0f);
+    }
+    // Patch normals stay with their vertices: vertex i was given the normal (i, 0, 1).
+    const TriangleMesh& patch = d.scene.meshes[1];
+    ASSERT_EQ(patch.normals.size(), 6u);
+    expect_vec3(patch.positions[3], 1.0f, 2.0f, 1.0f);
+    for (size_t i = 0; i < 6; ++i) {
+        const Vec3 n = glm::normalize(Vec3(float(i), 0.0f, 1.0f));
+        expect_vec3(patch.normals[i], n.x, n.y, n.z);
+    }
 }
 
 TEST(NffLoader, NumberForms) {
