@@ -17,17 +17,13 @@
 #include <vector>
 
 #include "core/error.h"
+#include "tests/test_helpers.h"
 
 namespace rayo {
 namespace {
 
 using Json = nlohmann::json;
-
-void expect_vec3(const Vec3& actual, float x, float y, float z, float tolerance = 1e-6f) {
-    EXPECT_NEAR(actual.x, x, tolerance);
-    EXPECT_NEAR(actual.y, y, tolerance);
-    EXPECT_NEAR(actual.z, z, tolerance);
-}
+using rayo_test::expect_vec3;
 
 class TempDir {
   public:

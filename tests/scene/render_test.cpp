@@ -2,14 +2,15 @@
 // and the determinism promise: identical bits for any thread count and tile size.
 #include <gtest/gtest.h>
 
-#include <cstring>
-
 #include "apps/scene/default_scene.h"
 #include "apps/scene/renderer.h"
 #include "core/error.h"
+#include "tests/test_helpers.h"
 
 namespace rayo {
 namespace {
+
+using rayo_test::same_bits;
 
 // A unit Lambert sphere seen from far away, lit by a directional light travelling along the
 // view direction: each visible point has radiance kd·I·(n·L), and over the projected disk the
@@ -89,11 +90,6 @@ TEST(RenderOrientation, ObjectRightOfViewAxisLandsInRightHalf) {
     EXPECT_EQ(left, 0);
     EXPECT_GT(top, 0);  // row 0 is the top of the image
     EXPECT_EQ(bottom, 0);
-}
-
-bool same_bits(const Film& a, const Film& b) {
-    return a.rgba().size() == b.rgba().size() &&
-           std::memcmp(a.rgba().data(), b.rgba().data(), a.rgba().size() * sizeof(float)) == 0;
 }
 
 TEST(RenderDeterminism, SameBitsForAnyThreadCountAndTileSize) {

@@ -10,10 +10,12 @@
 #include "apps/scene/scene_loader.h"
 #include "core/error.h"
 #include "shading/texture.h"
+#include "tests/test_helpers.h"
 
 namespace rayo {
 namespace {
 
+using rayo_test::differing_pixels;
 
 // A unit sphere filling the view, lit from the camera side.
 SceneDescription sphere_scene() {
@@ -33,14 +35,6 @@ SceneDescription sphere_scene() {
     light.position = Vec3(2, 3, 5);
     d.shading.lights.push_back(light);
     return d;
-}
-
-int differing_pixels(const Film& a, const Film& b) {
-    int n = 0;
-    for (int y = 0; y < a.height(); ++y) {
-        for (int x = 0; x < a.width(); ++x) n += a.rgb(x, y) != b.rgb(x, y);
-    }
-    return n;
 }
 
 TEST(TextureRender, TexturedSphereDiffersFromUntexturedAndUntexturedIsUnchanged) {
