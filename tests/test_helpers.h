@@ -18,12 +18,11 @@ namespace rayo_test {
 template <typename T>
 void expect_vec3(const glm::vec<3, T>& actual, double x, double y, double z,
                  double tolerance = 1e-6) {
-    EXPECT_NEAR(actual.x, x, tolerance) << "x of (" << actual.x << ", " << actual.y << ", "
-                                        << actual.z << ")";
-    EXPECT_NEAR(actual.y, y, tolerance) << "y of (" << actual.x << ", " << actual.y << ", "
-                                        << actual.z << ")";
-    EXPECT_NEAR(actual.z, z, tolerance) << "z of (" << actual.x << ", " << actual.y << ", "
-                                        << actual.z << ")";
+    ::testing::Message vector;
+    vector << "in (" << actual.x << ", " << actual.y << ", " << actual.z << ")";
+    EXPECT_NEAR(actual.x, x, tolerance) << vector;
+    EXPECT_NEAR(actual.y, y, tolerance) << vector;
+    EXPECT_NEAR(actual.z, z, tolerance) << vector;
 }
 
 // The same against an expected vector.
