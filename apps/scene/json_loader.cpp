@@ -13,6 +13,7 @@
 
 #include "apps/scene/mesh_loader.h"
 #include "core/error.h"
+#include "core/path_util.h"
 #include "shading/texture.h"
 
 namespace rayo {
@@ -771,15 +772,6 @@ glm::dmat4 SceneParser::parse_transform(const Json& value, const std::string& po
     return glm::scale(m, scale);
 }
 
-std::string lower_extension(const std::string& path) {
-    const size_t dot = path.find_last_of('.');
-    const size_t slash = path.find_last_of('/');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-    std::string ext = path.substr(dot);
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
-
 void SceneParser::parse_mesh(const Json& value, const std::string& pointer, SceneDescription& out) {
     check_keys(value, pointer, {"type", "file", "material", "transform", "smooth"});
     const std::string file_pointer = child(pointer, "file");
@@ -788,8 +780,7 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
         fail(file_pointer, "expected a path to an .obj, .gltf or .glb file, got " + describe(file));
     }
     const auto relative = file.get<std::string>();
-    const std::string path =
-        relative.front() == '/' || m_base_dir.empty() ? relative : m_base_dir + "/" + relative;
+    const std::string path = join_path(m_base_dir, relative);
     const std::string ext = lower_extension(path);
     if (ext != ".obj" && ext != ".gltf" && ext != ".glb") {
         fail(file_pointer, "expected a path to an .obj, .gltf or .glb file, got " + describe(file));
@@ -843,12 +834,6 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
         out.skipped_triangles += stats.degenerate_triangles;
     }
     out.scene.meshes.push_back(std::move(mesh));
-}
-
-std::string parent_directory(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    if (slash == std::string::npos) return "";
-    return slash == 0 ? "/" : path.substr(0, slash);
 }
 
 }  // namespace

@@ -23,15 +23,11 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/path_util.h"
 #include "core/scene.h"
 
 namespace rayo {
 namespace {
-
-std::string parent_directory(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
-}
 
 std::string file_name(const std::string& path) {
     const size_t slash = path.find_last_of('/');
