@@ -266,13 +266,13 @@ class SceneParser {
     }
 
     std::string choice(const Json& value, const std::string& pointer,
-                       std::initializer_list<const char*> options) const {
+                       const std::vector<std::string>& options) const {
         std::vector<std::string> names;
-        for (const char* option : options) names.push_back(std::string("\"") + option + "\"");
+        for (const std::string& option : options) names.push_back("\"" + option + "\"");
         const std::string expected = "one of " + join(names);
         if (!value.is_string()) fail(pointer, "expected " + expected + ", got " + describe(value));
         const auto text = value.get<std::string>();
-        for (const char* option : options) {
+        for (const std::string& option : options) {
             if (text == option) return text;
         }
         fail(pointer, "expected " + expected + ", got " + describe(value));
@@ -506,8 +506,7 @@ Texture SceneParser::parse_texture(const Json& value, const std::string& pointer
     require_object(value, pointer, "a texture object");
     const std::string type =
         choice(require(value, pointer, "type", "a texture type"), child(pointer, "type"),
-               {"constant", "value", "perlin", "turbulence", "cellular", "marble", "warped",
-                "pool-bottom"});
+               texture_kind_names());
     Texture t = make_texture(type);
     t.name = name;
     if (type == "constant") {

@@ -140,6 +140,20 @@ TEST(TextureJson, MaterialsNameTexturesForColoursAndBump) {
     EXPECT_FALSE(d.shading.materials[0].textures.any());  // "default" untouched
 }
 
+// Every kind of shading/texture.h's list is a JSON texture "type", with that kind's defaults.
+TEST(TextureJson, EveryTextureKindIsAType) {
+    for (const std::string& kind : texture_kind_names()) {
+        const SceneDescription d =
+            load_json_string(scene_with(R"({"a": {"type": ")" + kind + R"("}})", R"({})"),
+                             "t.json", ".");
+        ASSERT_EQ(d.shading.textures.size(), 1u) << kind;
+        EXPECT_EQ(d.shading.textures[0].map.index(), make_texture(kind).map.index()) << kind;
+    }
+    EXPECT_NE(load_error(scene_with(R"({"a": {"type": "plaid"}})", R"({})"))
+                  .find("expected one of \"constant\", \"value\""),
+              std::string::npos);
+}
+
 TEST(TextureJson, ErrorsNameTheJsonPointer) {
     EXPECT_NE(load_error(scene_with(R"({})", R"({"kd": "nope"})"))
                   .find("t.json#/materials/m/kd: unknown texture \"nope\""),
