@@ -14,6 +14,7 @@
 #include "apps/scene/mesh_loader.h"
 #include "core/error.h"
 #include "core/path_util.h"
+#include "core/scene_limits.h"
 #include "shading/texture.h"
 
 namespace rayo {
@@ -187,9 +188,8 @@ class SceneParser {
         if (!value.is_number())
             fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
         const double v = value.get<double>();
-        if (!std::isfinite(v) || std::fabs(v) > kMaxSceneMagnitude) {
-            fail(pointer, std::string("expected ") + expected +
-                              " that fits a float with its square (magnitude <= 1e18), got " +
+        if (!within_scene_magnitude(v)) {
+            fail(pointer, std::string("expected ") + kSceneMagnitudeRule + ", got " +
                               describe(value));
         }
         if ((bound == Bound::Positive && !(v > 0.0)) ||
@@ -811,9 +811,11 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
 
     transform_mesh(mesh, transform);
     for (const Vec3& p : mesh.positions) {
-        if (!(max_abs_component(p) <= static_cast<float>(kMaxSceneMagnitude))) {
+        if (!within_scene_magnitude(max_abs_component(p))) {
             fail(child(pointer, "transform"),
-                 "the transformed mesh does not fit in floats (coordinates beyond 1e18)");
+                 std::string("the transformed mesh does not fit in floats: every coordinate "
+                             "must be ") +
+                     kSceneMagnitudeRule);
         }
     }
     stats.degenerate_triangles += drop_degenerate_triangles(mesh);

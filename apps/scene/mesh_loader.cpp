@@ -25,6 +25,7 @@
 #include "core/error.h"
 #include "core/path_util.h"
 #include "core/scene.h"
+#include "core/scene_limits.h"
 
 namespace rayo {
 namespace {
@@ -50,10 +51,6 @@ void require_readable(const std::string& path, const std::string& where) {
 
 bool finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-bool within_scene_magnitude(double v) {
-    return std::isfinite(v) && std::fabs(v) <= kMaxSceneMagnitude;
 }
 
 void require_colour(const Vec3& c, const std::string& where, const std::string& what) {
@@ -159,9 +156,8 @@ void check_obj_text(const std::string& path) {
         char* end = nullptr;
         const double value = number_chars ? std::strtod(token.c_str(), &end) : 0.0;
         if (!number_chars || token.empty() || end != token.c_str() + token.size() ||
-            !std::isfinite(value) || std::fabs(value) > kMaxSceneMagnitude) {
-            fail("'" + tag + "': expected a finite number (in float range) of magnitude <= 1e18, "
-                 "got '" + token + "'");
+            !within_scene_magnitude(value)) {
+            fail("'" + tag + "': expected " + kSceneMagnitudeRule + ", got '" + token + "'");
         }
     };
     while (std::getline(file, line)) {
