@@ -1,7 +1,6 @@
 #include "apps/scene/json_loader.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
