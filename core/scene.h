@@ -8,15 +8,11 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "core/scene_limits.h"
 #include "core/shapes/mesh.h"
 #include "core/shapes/registry.h"
 
 namespace rayo {
-
-// The largest magnitude a scene number may have. Intersections square coordinates and radii
-// (r², |f|², the discriminant), and 1e18² = 1e36 stays finite in float while 1e20² does not: a
-// larger sphere would silently vanish. The loaders refuse anything beyond it (docs/limits.md).
-constexpr double kMaxSceneMagnitude = 1e18;
 
 // SurfaceHit::shape of a triangle hit (the analytic shapes are 0 .. kCount − 1).
 constexpr uint32_t kTriangleShape = AnalyticShapes::kCount;

@@ -146,6 +146,12 @@ const std::vector<std::string>& texture_kind_names() {
     return names;
 }
 
+std::string texture_kind_list() {
+    std::string list;
+    for (const std::string& n : texture_kind_names()) list += (list.empty() ? "" : ", ") + n;
+    return list;
+}
+
 Texture make_texture(const std::string& kind) {
     Texture t;
     t.name = kind;
@@ -178,9 +184,8 @@ Texture make_texture(const std::string& kind) {
         t.ramp = ColorRamp(
             {{0.0f, srgb8_to_linear(40, 100, 162)}, {1.0f, srgb8_to_linear(91, 187, 201)}});
     } else {
-        std::string known;
-        for (const std::string& n : texture_kind_names()) known += (known.empty() ? "" : ", ") + n;
-        throw InputError("", "unknown texture '" + kind + "' (expected one of: " + known + ")");
+        throw InputError("", "unknown texture '" + kind + "' (expected one of: " +
+                                 texture_kind_list() + ")");
     }
     return t;
 }

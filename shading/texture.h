@@ -100,6 +100,8 @@ constexpr float kGradientStep = 1e-3f;
 // bottom's water ramp RGB(40,100,162) -> RGB(91,187,201), a veined ramp for marble). Unknown
 // names throw InputError("", ...) listing the known ones.
 const std::vector<std::string>& texture_kind_names();
+// The same names joined by ", ", for messages and the CLI's help.
+std::string texture_kind_list();
 Texture make_texture(const std::string& kind);
 
 // Bump mapping (seed 003's suggested extension): the normal of the surface displaced along

@@ -66,8 +66,9 @@ render options:
   --quiet                  no progress bar and no summary line
   --stats                  print the full statistics table
 
-texture options (NAME: constant, value, perlin, turbulence, cellular, marble, warped,
-pool-bottom; docs/textures.md):
+texture NAME is one of (docs/textures.md):
+  @TEXTURE_KINDS@
+texture options:
   -o, --output FILE        output image, as for render [NAME.png]
   --size WxH               image size in pixels [512x512]; 64 pixels per world unit
   --scale S                world units per feature, 1e-6..1e6 [1: the seed's 64-pixel cells]
@@ -75,6 +76,13 @@ pool-bottom; docs/textures.md):
 
 The OCIO config is $OCIO when set, else rayo's own (sRGB display: sRGB, ACES 1.0 SDR-video, Raw).
 )";
+
+// kUsage with the texture kinds filled in from their one list (shading/texture.h).
+std::string usage() {
+    std::string text = kUsage;
+    const std::string slot = "@TEXTURE_KINDS@";
+    return text.replace(text.find(slot), slot.size(), texture_kind_list());
+}
 
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -390,8 +398,7 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
         }
     }
     const std::vector<std::string>& names = texture_kind_names();
-    std::string known;
-    for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+    const std::string known = texture_kind_list();
     if (!name) throw UsageError("texture: expected a texture name (" + known + ")");
     if (std::find(names.begin(), names.end(), *name) == names.end()) {
         throw UsageError("texture: unknown texture '" + *name + "' (expected one of: " + known +
@@ -459,13 +466,13 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
     std::vector<std::string> args(argv + 1, argv + argc);
     try {
         if (args.empty()) {
-            err << kUsage;
+            err << usage();
             return kExitUsage;
         }
         const std::string command = args[0];
         args.erase(args.begin());
         if (command == "--help" || command == "-h" || command == "help") {
-            out << kUsage;
+            out << usage();
             return 0;
         }
         if (command == "--version") {
@@ -474,7 +481,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
         }
         for (const std::string& a : args) {
             if (a == "--help" || a == "-h") {
-                out << kUsage;
+                out << usage();
                 return 0;
             }
         }

@@ -1,7 +1,6 @@
 #include "apps/scene/json_loader.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
@@ -13,6 +12,8 @@
 
 #include "apps/scene/mesh_loader.h"
 #include "core/error.h"
+#include "core/path_util.h"
+#include "core/scene_limits.h"
 #include "shading/texture.h"
 
 namespace rayo {
@@ -199,9 +200,8 @@ class SceneParser {
         if (!value.is_number())
             fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
         const double v = value.get<double>();
-        if (!std::isfinite(v) || std::fabs(v) > kMaxSceneMagnitude) {
-            fail(pointer, std::string("expected ") + expected +
-                              " that fits a float with its square (magnitude <= 1e18), got " +
+        if (!within_scene_magnitude(v)) {
+            fail(pointer, std::string("expected ") + kSceneMagnitudeRule + ", got " +
                               describe(value));
         }
         if ((bound == Bound::Positive && !(v > 0.0)) ||
@@ -277,10 +277,6 @@ class SceneParser {
         return v / length;
     }
 
-    std::string choice(const Json& value, const std::string& pointer,
-                       std::initializer_list<const char*> options) const {
-        return choice(value, pointer, std::vector<std::string>(options.begin(), options.end()));
-    }
     std::string choice(const Json& value, const std::string& pointer,
                        const std::vector<std::string>& options) const {
         std::vector<std::string> names;
@@ -592,8 +588,7 @@ Texture SceneParser::parse_texture(const Json& value, const std::string& pointer
     require_object(value, pointer, "a texture object");
     const std::string type =
         choice(require(value, pointer, "type", "a texture type"), child(pointer, "type"),
-               {"constant", "value", "perlin", "turbulence", "cellular", "marble", "warped",
-                "pool-bottom"});
+               texture_kind_names());
     Texture t = make_texture(type);
     t.name = name;
     if (type == "constant") {
@@ -846,15 +841,6 @@ glm::dmat4 SceneParser::parse_transform(const Json& value, const std::string& po
     return glm::scale(m, scale);
 }
 
-std::string lower_extension(const std::string& path) {
-    const size_t dot = path.find_last_of('.');
-    const size_t slash = path.find_last_of('/');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-    std::string ext = path.substr(dot);
-    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return ext;
-}
-
 void SceneParser::parse_mesh(const Json& value, const std::string& pointer, SceneDescription& out) {
     check_keys(value, pointer, {"type", "file", "material", "transform", "smooth"});
     const std::string file_pointer = child(pointer, "file");
@@ -863,8 +849,7 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
         fail(file_pointer, "expected a path to an .obj, .gltf or .glb file, got " + describe(file));
     }
     const auto relative = file.get<std::string>();
-    const std::string path =
-        relative.front() == '/' || m_base_dir.empty() ? relative : m_base_dir + "/" + relative;
+    const std::string path = join_path(m_base_dir, relative);
     const std::string ext = lower_extension(path);
     if (ext != ".obj" && ext != ".gltf" && ext != ".glb") {
         fail(file_pointer, "expected a path to an .obj, .gltf or .glb file, got " + describe(file));
@@ -896,9 +881,11 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
 
     transform_mesh(mesh, transform);
     for (const Vec3& p : mesh.positions) {
-        if (!(max_abs_component(p) <= static_cast<float>(kMaxSceneMagnitude))) {
+        if (!within_scene_magnitude(max_abs_component(p))) {
             fail(child(pointer, "transform"),
-                 "the transformed mesh does not fit in floats (coordinates beyond 1e18)");
+                 std::string("the transformed mesh does not fit in floats: every coordinate "
+                             "must be ") +
+                     kSceneMagnitudeRule);
         }
     }
     stats.degenerate_triangles += drop_degenerate_triangles(mesh);
@@ -918,12 +905,6 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
         out.skipped_triangles += stats.degenerate_triangles;
     }
     out.scene.meshes.push_back(std::move(mesh));
-}
-
-std::string parent_directory(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    if (slash == std::string::npos) return "";
-    return slash == 0 ? "/" : path.substr(0, slash);
 }
 
 }  // namespace

@@ -13,7 +13,8 @@ namespace rayo {
 SceneDescription load_json_file(const std::string& path);
 
 // Parses scene text; `source_name` is used in error places and as SceneDescription::source,
-// `base_dir` resolves relative mesh paths ("" means the current directory).
+// `base_dir` resolves relative mesh paths (core/path_util.h join_path: "" or "." mean the current
+// directory).
 SceneDescription load_json_string(const std::string& text, const std::string& source_name,
                                   const std::string& base_dir);
 

@@ -23,15 +23,12 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/path_util.h"
 #include "core/scene.h"
+#include "core/scene_limits.h"
 
 namespace rayo {
 namespace {
-
-std::string parent_directory(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
-}
 
 std::string file_name(const std::string& path) {
     const size_t slash = path.find_last_of('/');
@@ -52,12 +49,18 @@ void require_readable(const std::string& path, const std::string& where) {
     if (!file) throw InputError(where, "cannot open mesh file '" + path + "'");
 }
 
-bool finite(const Vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+// The whole file, read once, for loaders that parse it from memory.
+std::string read_mesh_file(const std::string& path, const std::string& where) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw InputError(where, "cannot open mesh file '" + path + "'");
+    std::ostringstream text;
+    text << file.rdbuf();
+    if (file.bad()) throw InputError(where, "cannot read mesh file '" + path + "'");
+    return text.str();
 }
 
-bool within_scene_magnitude(double v) {
-    return std::isfinite(v) && std::fabs(v) <= kMaxSceneMagnitude;
+bool finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
 void require_colour(const Vec3& c, const std::string& where, const std::string& what) {
@@ -111,8 +114,8 @@ std::string obj_place(const std::string& path, const std::string& message) {
 
 // tinyobjloader reports out-of-range face indices only as a warning naming the file's last
 // line, so the loader finds the first offending `f` line itself (0 when there is none).
-size_t find_bad_face_line(const std::string& path) {
-    std::ifstream file(path);
+size_t find_bad_face_line(const std::string& obj_text) {
+    std::istringstream file(obj_text);
     std::string line;
     size_t number = 0;
     long long vertices = 0, normals = 0;
@@ -151,8 +154,8 @@ size_t find_bad_face_line(const std::string& path) {
 // tinyobjloader reads a missing coordinate as 0 and "inf" or "1e39" as whatever its parser
 // makes of them, and drops faces of fewer than 3 vertices without a word; so the loader checks
 // the statements it uses first, each error naming "path:line" (the bad-input catalogue, tests/cli/bad_input_test.cpp).
-void check_obj_text(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
+void check_obj_text(const std::string& obj_text, const std::string& path) {
+    std::istringstream file(obj_text);
     std::string line;
     size_t number = 0;
     auto fail = [&](const std::string& message) {
@@ -163,9 +166,8 @@ void check_obj_text(const std::string& path) {
         char* end = nullptr;
         const double value = number_chars ? std::strtod(token.c_str(), &end) : 0.0;
         if (!number_chars || token.empty() || end != token.c_str() + token.size() ||
-            !std::isfinite(value) || std::fabs(value) > kMaxSceneMagnitude) {
-            fail("'" + tag + "': expected a finite number (in float range) of magnitude <= 1e18, "
-                 "got '" + token + "'");
+            !within_scene_magnitude(value)) {
+            fail("'" + tag + "': expected " + kSceneMagnitudeRule + ", got '" + token + "'");
         }
     };
     while (std::getline(file, line)) {
@@ -214,15 +216,18 @@ uint32_t default_material_index(std::vector<Material>& materials) {
 
 TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
                       const std::string& where, MeshImportStats* stats) {
-    require_readable(path, where);
-    check_obj_text(path);
+    // One read: the checks and tinyobjloader parse this text; the material libraries it names
+    // are still looked up next to the file.
+    const std::string text = read_mesh_file(path, where);
+    check_obj_text(text, path);
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> file_materials;
     std::string warn, err;
-    const std::string mtl_dir = parent_directory(path) + "/";
-    const bool ok = tinyobj::LoadObj(&attrib, &shapes, &file_materials, &warn, &err, path.c_str(),
-                                     mtl_dir.c_str(), /*triangulate=*/true);
+    std::istringstream stream(text);
+    tinyobj::MaterialFileReader mtl_reader(parent_directory(path));
+    const bool ok = tinyobj::LoadObj(&attrib, &shapes, &file_materials, &warn, &err, &stream,
+                                     &mtl_reader, /*triangulate=*/true);
     if (!ok || !err.empty()) {
         const std::string message = one_line(err.empty() ? warn : err);
         throw InputError(obj_place(path, message),
@@ -274,7 +279,7 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
                 if (index.vertex_index < 0 ||
                     static_cast<size_t>(index.vertex_index) >= vertex_count ||
                     index.normal_index >= static_cast<int>(normal_count)) {
-                    const size_t line = find_bad_face_line(path);
+                    const size_t line = find_bad_face_line(text);
                     throw InputError(line ? path + ":" + std::to_string(line) : path,
                                      "face index out of bounds (the file has " +
                                          std::to_string(vertex_count) + " vertices and " +

@@ -17,6 +17,7 @@
 
 #include "core/camera.h"
 #include "core/error.h"
+#include "core/scene_limits.h"
 
 namespace rayo {
 namespace {
@@ -172,11 +173,9 @@ float parse_float(std::string_view token, const Where& where, const char* what) 
     if (error != std::errc() || stop != end) {
         throw InputError(where, std::string(what) + ": expected a number, got " + quoted(token));
     }
-    if (!std::isfinite(value) || std::abs(value) > kMaxSceneMagnitude) {
-        throw InputError(where, std::string(what) +
-                                    ": expected a finite number (in float range) of magnitude "
-                                    "<= 1e18, so that its square stays finite, got " +
-                                    quoted(token));
+    if (!within_scene_magnitude(value)) {
+        throw InputError(where, std::string(what) + ": expected " + kSceneMagnitudeRule +
+                                    ", got " + quoted(token));
     }
     return static_cast<float>(value);
 }

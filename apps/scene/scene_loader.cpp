@@ -1,19 +1,14 @@
 #include "apps/scene/scene_loader.h"
 
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
-
 #include "apps/scene/json_loader.h"
 #include "apps/scene/nff_loader.h"
 #include "core/error.h"
+#include "core/path_util.h"
 
 namespace rayo {
 
 SceneDescription load_scene_file(const std::string& path, const SceneLoadOptions& options) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = lower_extension(path);
     if (extension == ".json") return load_json_file(path);
     if (extension == ".nff") return load_nff_file(path, nullptr, options.nff);
     throw InputError(path, "unknown scene format '" + extension +

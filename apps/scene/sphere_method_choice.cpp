@@ -51,6 +51,7 @@ SphereChoice choose_sphere_method(const SceneDescription& d, const Camera& camer
         worst_float_error_px = glm::max(
             worst_float_error_px, 4.0f * kFloatEpsilon * magnitude / (distance * pixel_angle));
     }
+    choice.worst_float_error_px = worst_float_error_px;
     const float budget = d.settings.max_error_px;
     // Analytic spheres through Embree user geometry are exact to float precision and, in our
     // measurements, as cheap as any other representation (docs/sphere-methods.md).

@@ -13,6 +13,9 @@ struct SphereChoice {
     SphereRepresentation spheres;
     SphereMath math = SphereMath::Stable;
     std::string reason;  // one line for --stats
+    // Under auto with spheres: the estimated worst silhouette error of float coordinates over
+    // the scene's spheres, in pixels (quoted by `reason` under stable math); 0 when not estimated.
+    float worst_float_error_px = 0.0f;
 };
 
 // Resolves settings.spheres (when Auto) and settings.sphere_math for this camera. An explicit

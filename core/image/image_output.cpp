@@ -8,7 +8,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -21,6 +20,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/path_util.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -31,17 +31,6 @@ namespace {
 enum class Format { Exr, Png, Tiff, Jpeg };
 
 const char* const kSupportedExtensions = ".exr, .png, .tif, .tiff, .jpg, .jpeg";
-
-// The extension of the last path component, lower case, with its dot ("" when there is none).
-std::string lower_extension(const std::string& path) {
-    const size_t slash = path.find_last_of('/');
-    const size_t dot = path.find_last_of('.');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-    std::string ext = path.substr(dot);
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
 
 Format format_of(const std::string& path) {
     const std::string ext = lower_extension(path);

@@ -350,7 +350,7 @@ TEST_F(BadInputObj, DegenerateFacesAndMissingMaterials) {
         write("m.obj", c.text);
         expect_refused("render scene.json -o out.png", c.place, c.expected, c.label);
     }
-    // A transform that pushes the mesh past the scene magnitude (1e18, core/scene.h).
+    // A transform that pushes the mesh past the scene magnitude (1e18, core/scene_limits.h).
     write("m.obj", "v 1000 0 0\nv 0 1000 0\nv 0 0 1000\nf 1 2 3\n");
     write("big.json",
           with_object(R"({"type": "mesh", "file": "m.obj", "transform": {"scale": 1e17}})"));

@@ -27,6 +27,19 @@ int cli(std::vector<std::string> args, std::string* err_text = nullptr) {
     return rc;
 }
 
+// The help names every texture kind, from their one list (shading/texture.h).
+TEST(TextureCli, HelpListsEveryTextureKind) {
+    const char* argv[] = {"rayo", "--help"};
+    std::ostringstream out, err;
+    ASSERT_EQ(run_cli(2, argv, out, err), 0);
+    const std::string help = out.str();
+    const std::string line = "NAME is one of (docs/textures.md):\n  " + texture_kind_list() + "\n";
+    EXPECT_NE(help.find(line), std::string::npos) << help;
+    for (const std::string& kind : texture_kind_names()) {
+        EXPECT_NE(help.find(kind), std::string::npos) << kind;
+    }
+}
+
 TEST(TextureCli, WritesTheTextureFlatAndRefusesBadFlags) {
     const std::filesystem::path dir =
         std::filesystem::temp_directory_path() / ("rayo_texture_cli_" + std::to_string(::getpid()));

@@ -11,16 +11,14 @@
 #include <random>
 #include <vector>
 
+#include "tests/test_helpers.h"
+
 namespace rayo {
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using rayo_test::expect_vec_near;
 
-void expect_vec_near(const Vec3& actual, const Vec3& expected, float tolerance) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
+constexpr float kInf = std::numeric_limits<float>::infinity();
 
 // Distance in float ulps (both values finite and of the same sign here).
 int64_t ulp_distance(float a, float b) {

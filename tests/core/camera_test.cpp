@@ -9,9 +9,12 @@
 #include <string>
 
 #include "core/error.h"
+#include "tests/test_helpers.h"
 
 namespace rayo {
 namespace {
+
+using rayo_test::expect_vec_near;
 
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
@@ -36,12 +39,6 @@ double angle_degrees(const Vec3& a, const Vec3& b) {
 Vec3 on_window(const Camera& camera, float px, float py) {
     const Ray ray = camera.generate_ray(px, py);
     return ray.direction / glm::dot(ray.direction, camera.view());
-}
-
-void expect_vec_near(const Vec3& actual, const Vec3& expected, float tolerance) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
 }
 
 TEST(Camera, CentrePixelOfOddImageLooksAlongTheViewDirection) {

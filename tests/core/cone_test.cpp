@@ -7,16 +7,14 @@
 #include <cmath>
 #include <limits>
 
+#include "tests/test_helpers.h"
+
 namespace rayo {
 namespace {
 
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using rayo_test::expect_vec_near;
 
-void expect_vec_near(const Vec3& actual, const Vec3& expected, float tolerance) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
+constexpr float kInf = std::numeric_limits<float>::infinity();
 
 // Cylinder of radius 1 around the y axis, 0 <= y <= 2.
 Cone unit_cylinder() {

@@ -9,8 +9,12 @@
 #include <limits>
 #include <random>
 
+#include "tests/test_helpers.h"
+
 namespace rayo {
 namespace {
+
+using rayo_test::expect_vec3;
 
 template <typename T>
 struct Case {
@@ -23,13 +27,6 @@ template <typename T>
 class SphereWorkedExample : public ::testing::Test {};
 using Scalars = ::testing::Types<float, double>;
 TYPED_TEST_SUITE(SphereWorkedExample, Scalars);
-
-template <typename T>
-void expect_near3(const glm::vec<3, T>& actual, double x, double y, double z, double tolerance) {
-    EXPECT_NEAR(actual.x, x, tolerance);
-    EXPECT_NEAR(actual.y, y, tolerance);
-    EXPECT_NEAR(actual.z, z, tolerance);
-}
 
 TYPED_TEST(SphereWorkedExample, OriginOutsideHitsTheNearRoot) {
     using T = TypeParam;
@@ -48,8 +45,8 @@ TYPED_TEST(SphereWorkedExample, OriginOutsideHitsTheNearRoot) {
         EXPECT_NEAR(t, 3.7435, 1e-4);
         EXPECT_FALSE(far_root);
         const V p = origin + t * direction;
-        expect_near3(p, 1.8169, -0.3662, 2.2676, 1e-4);
-        expect_near3(sphere_normal(p, center, radius, far_root), -0.3944, -0.1221, -0.9108, 1e-4);
+        expect_vec3(p, 1.8169, -0.3662, 2.2676, 1e-4);
+        expect_vec3(sphere_normal(p, center, radius, far_root), -0.3944, -0.1221, -0.9108, 1e-4);
     }
 }
 
@@ -70,8 +67,8 @@ TYPED_TEST(SphereWorkedExample, OriginInsideHitsTheFarRootWithFlippedNormal) {
         EXPECT_NEAR(t, 6.1573, 1e-4);
         EXPECT_TRUE(far_root);
         const V p = origin + t * direction;
-        expect_near3(p, 4.6456, 1.2912, 6.9368, 1e-4);
-        expect_near3(sphere_normal(p, center, radius, far_root), -0.1614, -0.0728, -0.9842, 1e-4);
+        expect_vec3(p, 4.6456, 1.2912, 6.9368, 1e-4);
+        expect_vec3(sphere_normal(p, center, radius, far_root), -0.1614, -0.0728, -0.9842, 1e-4);
         // With tnear below t0 = −0.812 the near root is accepted instead (and is not flipped).
         ASSERT_TRUE(intersect_sphere(math, origin, direction, center, radius, T(-1),
                                      std::numeric_limits<T>::infinity(), t, far_root));

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -45,6 +46,7 @@ TEST(AccuracyStudy, FarSceneSeparatesSeedFromStable) {
         if (name == "far") far = scene;
     }
     ASSERT_FALSE(far.scene.shapes.of<Sphere>().empty());
+    const SceneDescription as_built = far;  // the study's settings: --sphere-method auto
     far.settings.spheres = *parse_sphere_method("bruteforce");
     far.settings.sphere_math = SphereMath::Double;
     const RenderResult reference = render_scene(far, 0, false);
@@ -59,9 +61,24 @@ TEST(AccuracyStudy, FarSceneSeparatesSeedFromStable) {
     EXPECT_LT(stable.rmse, 1e-4);
     EXPECT_LT(stable.pixels_differing, 0.01);
     EXPECT_EQ(twice.rmse, 0.0);  // the same double quadratic, through the BVH or not
-    // `auto` keeps the analytic stable path here.
-    const SphereChoice choice = choose_sphere_method(far, Camera::create(far.scene.camera));
+    // `auto` keeps the analytic stable path measured above, not double, and says why: every
+    // centre is ~2000 from the eye, which is 2000 from the origin, so the float error it
+    // estimates is 4ε·2000/(2000·pixel angle) = 0.0078 px (pixel angle 2·tan(0.225°)/128),
+    // within the 0.5 px budget; the centre sphere, 1/(2000·pixel angle) = 8.15 px in radius,
+    // would need mesh level 2 (8.15 × 0.0658 = 0.54 px at level 1, 8.15 × 0.0178 = 0.14 at 2).
+    ASSERT_EQ(as_built.settings.spheres.method, SphereMethod::Auto);
+    ASSERT_EQ(as_built.settings.sphere_math, SphereMath::Stable);
+    const SphereChoice choice =
+        choose_sphere_method(as_built, Camera::create(as_built.scene.camera));
     EXPECT_EQ(choice.spheres.method, SphereMethod::User);
+    EXPECT_EQ(choice.math, SphereMath::Stable);
+    const double pixel_angle = 2.0 * std::tan(0.225 * 3.14159265358979323846 / 180.0) / 128.0;
+    const double error_px = 4.0 * std::ldexp(1.0, -23) / pixel_angle;
+    EXPECT_NEAR(choice.worst_float_error_px, error_px, 1e-5 * error_px);
+    EXPECT_EQ(choice.reason.rfind("user/stable: analytic and exact", 0), 0u) << choice.reason;
+    EXPECT_NE(choice.reason.find("a mesh would need level 2 for the largest sphere (8.14"),
+              std::string::npos)
+        << choice.reason;
 }
 
 TEST(AccuracyBenchCommand, WritesCsvAndChartsForEveryScene) {

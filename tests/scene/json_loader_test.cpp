@@ -13,15 +13,12 @@
 #include <variant>
 
 #include "core/error.h"
+#include "tests/test_helpers.h"
 
 namespace rayo {
 namespace {
 
-void expect_vec3(const Vec3& actual, float x, float y, float z, float tolerance = 0.0f) {
-    EXPECT_NEAR(actual.x, x, tolerance);
-    EXPECT_NEAR(actual.y, y, tolerance);
-    EXPECT_NEAR(actual.z, z, tolerance);
-}
+using rayo_test::expect_vec3;
 
 SceneDescription load(const std::string& text, const std::string& base_dir = "") {
     return load_json_string(text, "scene.json", base_dir);
@@ -102,9 +99,9 @@ TEST(JsonLoaderFull, EveryFieldParsedToExactValues) {
     const SceneDescription d = load(text);
     EXPECT_EQ(d.source, "scene.json");
     const CameraDesc& c = d.scene.camera;
-    expect_vec3(c.eye, 1, 2, 3);
-    expect_vec3(c.look_at, 0, 0.5f, -1);
-    expect_vec3(c.up, 0, 1, 0);  // normalized
+    expect_vec3(c.eye, 1, 2, 3, 0);
+    expect_vec3(c.look_at, 0, 0.5f, -1, 0);
+    expect_vec3(c.up, 0, 1, 0, 0);  // normalized
     EXPECT_EQ(c.distance, 2.0f);
     EXPECT_EQ(c.hfov_degrees.value(), 50.0f);
     EXPECT_EQ(c.vfov_degrees.value(), 30.0f);
@@ -117,29 +114,29 @@ TEST(JsonLoaderFull, EveryFieldParsedToExactValues) {
     EXPECT_EQ(d.settings.tile_size, 32);
     EXPECT_EQ(d.settings.sphere_math, SphereMath::Seed);
 
-    expect_vec3(d.shading.background, 0.1f, 0.2f, 0.3f);
-    expect_vec3(d.shading.ambient_light, 0.5f, 0.5f, 0.5f);
+    expect_vec3(d.shading.background, 0.1f, 0.2f, 0.3f, 0);
+    expect_vec3(d.shading.ambient_light, 0.5f, 0.5f, 0.5f, 0);
 
     ASSERT_EQ(d.shading.materials.size(), 2u);
     const Material& def = d.shading.materials[0];
     EXPECT_EQ(def.name, "default");
-    expect_vec3(def.kd, 0.5f, 0.5f, 0.5f);
+    expect_vec3(def.kd, 0.5f, 0.5f, 0.5f, 0);
     expect_vec3(def.ka, 0.05f, 0.05f, 0.05f, 1e-7f);  // 0.1 × kd
     const Material& m = d.shading.materials[1];
     EXPECT_EQ(m.name, "shiny");
-    expect_vec3(m.ka, 0.01f, 0.02f, 0.03f);
-    expect_vec3(m.kd, 0.4f, 0.5f, 0.6f);
-    expect_vec3(m.ks, 0.7f, 0.8f, 0.9f);
+    expect_vec3(m.ka, 0.01f, 0.02f, 0.03f, 0);
+    expect_vec3(m.kd, 0.4f, 0.5f, 0.6f, 0);
+    expect_vec3(m.ks, 0.7f, 0.8f, 0.9f, 0);
     EXPECT_EQ(m.shininess, 100.0f);
     EXPECT_EQ(m.specular_model, SpecularModel::Blinn);
-    expect_vec3(m.reflect, 0.25f, 0.25f, 0.25f);
-    expect_vec3(m.transmit, 0.5f, 0.25f, 0.125f);
+    expect_vec3(m.reflect, 0.25f, 0.25f, 0.25f, 0);
+    expect_vec3(m.transmit, 0.5f, 0.25f, 0.125f, 0);
     EXPECT_EQ(m.ior, 1.5f);
 
     ASSERT_EQ(d.shading.lights.size(), 3u);
     const auto& p0 = std::get<PointLight>(d.shading.lights[0]);
-    expect_vec3(p0.position, 4, 5, 6);
-    expect_vec3(p0.color, 1, 0.5f, 0.25f);
+    expect_vec3(p0.position, 4, 5, 6, 0);
+    expect_vec3(p0.color, 1, 0.5f, 0.25f, 0);
     EXPECT_EQ(p0.intensity, 2.0f);
     EXPECT_EQ(p0.attenuation.kind, Attenuation::Kind::Linear);
     EXPECT_EQ(p0.attenuation.d0, 0.5f);
@@ -148,21 +145,21 @@ TEST(JsonLoaderFull, EveryFieldParsedToExactValues) {
     EXPECT_EQ(p1.attenuation.a0, 0.5f);
     EXPECT_EQ(p1.attenuation.a1, 0.25f);
     EXPECT_EQ(p1.attenuation.a2, 0.125f);
-    expect_vec3(p1.color, 1, 1, 1);
+    expect_vec3(p1.color, 1, 1, 1, 0);
     EXPECT_EQ(p1.intensity, 1.0f);
     const auto& sun = std::get<DirectionalLight>(d.shading.lights[2]);
-    expect_vec3(sun.direction, 0, -1, 0);
-    expect_vec3(sun.color, 0.5f, 0.5f, 0.5f);
+    expect_vec3(sun.direction, 0, -1, 0, 0);
+    expect_vec3(sun.color, 0.5f, 0.5f, 0.5f, 0);
     EXPECT_EQ(sun.intensity, 3.0f);
 
     ASSERT_EQ(d.scene.shapes.of<Sphere>().size(), 1u);
-    expect_vec3(d.scene.shapes.of<Sphere>()[0].center, 1, 2, 3);
+    expect_vec3(d.scene.shapes.of<Sphere>()[0].center, 1, 2, 3, 0);
     EXPECT_EQ(d.scene.shapes.of<Sphere>()[0].radius, 0.5f);
     EXPECT_EQ(d.scene.shapes.of<Sphere>()[0].material, 1u);
     ASSERT_EQ(d.scene.shapes.of<Cone>().size(), 1u);
-    expect_vec3(d.scene.shapes.of<Cone>()[0].base, 0, 0, 0);
+    expect_vec3(d.scene.shapes.of<Cone>()[0].base, 0, 0, 0, 0);
     EXPECT_EQ(d.scene.shapes.of<Cone>()[0].base_radius, 1.0f);
-    expect_vec3(d.scene.shapes.of<Cone>()[0].apex, 0, 2, 0);
+    expect_vec3(d.scene.shapes.of<Cone>()[0].apex, 0, 2, 0, 0);
     EXPECT_EQ(d.scene.shapes.of<Cone>()[0].apex_radius, 0.25f);
     EXPECT_EQ(d.scene.shapes.of<Cone>()[0].material, 0u);
 
@@ -174,16 +171,16 @@ TEST(JsonLoaderFull, EveryFieldParsedToExactValues) {
     EXPECT_EQ(polygons.materials[1], 0u);
     EXPECT_EQ(polygons.materials[2], 0u);
     ASSERT_EQ(polygons.normals.size(), polygons.positions.size());
-    expect_vec3(polygons.normals[3], 0, 0, 1);  // first quad normal, normalized from [0, 0, 2]
-    expect_vec3(polygons.positions[5], 1, 1, 1);
+    expect_vec3(polygons.normals[3], 0, 0, 1, 0);  // first quad normal, normalized from [0, 0, 2]
+    expect_vec3(polygons.positions[5], 1, 1, 1, 0);
 }
 
 TEST(JsonLoaderDefaults, MinimalSceneGetsDocumentedDefaults) {
     const SceneDescription d = load(R"({"rayo": 1})");
     const CameraDesc& c = d.scene.camera;
-    expect_vec3(c.eye, 0, 0, 5);
-    expect_vec3(c.look_at, 0, 0, 0);
-    expect_vec3(c.up, 0, 1, 0);
+    expect_vec3(c.eye, 0, 0, 5, 0);
+    expect_vec3(c.look_at, 0, 0, 0, 0);
+    expect_vec3(c.up, 0, 1, 0, 0);
     EXPECT_EQ(c.distance, 1.0f);
     EXPECT_FALSE(c.hfov_degrees.has_value());
     EXPECT_EQ(c.vfov_degrees.value(), 45.0f);
@@ -194,11 +191,11 @@ TEST(JsonLoaderDefaults, MinimalSceneGetsDocumentedDefaults) {
     EXPECT_EQ(d.settings.whitted.min_contribution, 1e-3f);
     EXPECT_EQ(d.settings.tile_size, 64);
     EXPECT_EQ(d.settings.sphere_math, SphereMath::Stable);
-    expect_vec3(d.shading.background, 0, 0, 0);
-    expect_vec3(d.shading.ambient_light, 1, 1, 1);
+    expect_vec3(d.shading.background, 0, 0, 0, 0);
+    expect_vec3(d.shading.ambient_light, 1, 1, 1, 0);
     ASSERT_EQ(d.shading.materials.size(), 1u);
     EXPECT_EQ(d.shading.materials[0].name, "default");
-    expect_vec3(d.shading.materials[0].kd, 0.8f, 0.8f, 0.8f);
+    expect_vec3(d.shading.materials[0].kd, 0.8f, 0.8f, 0.8f, 0);
     EXPECT_TRUE(d.shading.lights.empty());
     EXPECT_TRUE(d.scene.shapes.of<Sphere>().empty());
     EXPECT_TRUE(d.scene.meshes.empty());
@@ -212,15 +209,15 @@ TEST(JsonLoaderDefaults, MaterialAndLightDefaults) {
         "objects": [ { "type": "sphere", "center": [0, 0, 0], "radius": 1 } ]})");
     const Material& m = d.shading.materials.at(1);
     expect_vec3(m.ka, 0.02f, 0.04f, 0.06f, 1e-7f);  // 0.1 × kd
-    expect_vec3(m.ks, 0, 0, 0);
+    expect_vec3(m.ks, 0, 0, 0, 0);
     EXPECT_EQ(m.shininess, 32.0f);
     EXPECT_EQ(m.specular_model, SpecularModel::Phong);
-    expect_vec3(m.reflect, 0, 0, 0);
-    expect_vec3(m.transmit, 0, 0, 0);
+    expect_vec3(m.reflect, 0, 0, 0, 0);
+    expect_vec3(m.transmit, 0, 0, 0, 0);
     EXPECT_EQ(m.ior, 1.0f);
     const auto& point = std::get<PointLight>(d.shading.lights[0]);
     EXPECT_EQ(point.attenuation.kind, Attenuation::Kind::None);
-    expect_vec3(point.color, 1, 1, 1);
+    expect_vec3(point.color, 1, 1, 1, 0);
     const auto& sun = std::get<DirectionalLight>(d.shading.lights[1]);
     expect_vec3(sun.direction, 0.6f, 0, 0.8f, 1e-7f);
     EXPECT_EQ(d.scene.shapes.of<Sphere>().at(0).material, 0u);  // no material: "default"
@@ -475,7 +472,7 @@ TEST(JsonLoaderExamples, MeshExamplesCarryTheirMaterials) {
     for (const Material& m : obj.shading.materials) {
         if (m.name == "gold_mirror") {
             gold = true;
-            expect_vec3(m.reflect, 0.6f, 0.5f, 0.2f);  // illum 3: reflect = Ks
+            expect_vec3(m.reflect, 0.6f, 0.5f, 0.2f, 0);  // illum 3: reflect = Ks
         }
     }
     EXPECT_TRUE(gold);

@@ -4,6 +4,7 @@
 #include "apps/scene/mesh_loader.h"
 
 #include <gtest/gtest.h>
+#include <sys/inotify.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -17,17 +18,13 @@
 #include <vector>
 
 #include "core/error.h"
+#include "tests/test_helpers.h"
 
 namespace rayo {
 namespace {
 
 using Json = nlohmann::json;
-
-void expect_vec3(const Vec3& actual, float x, float y, float z, float tolerance = 1e-6f) {
-    EXPECT_NEAR(actual.x, x, tolerance);
-    EXPECT_NEAR(actual.y, y, tolerance);
-    EXPECT_NEAR(actual.z, z, tolerance);
-}
+using rayo_test::expect_vec3;
 
 class TempDir {
   public:
@@ -175,6 +172,55 @@ TEST(MeshLoaderObj, MissingMaterialLibraryIsAnError) {
     const InputError error = expect_input_error([&] { load_obj(path, materials, "here"); });
     EXPECT_EQ(error.where().rfind(path, 0), 0u) << error.where();
     EXPECT_NE(error.message().find("gone.mtl"), std::string::npos) << error.message();
+}
+
+// How many times `f` opens the file at `path`, counted with inotify (Linux): IN_OPEN events on
+// the file. Closes are watched too, so that two successive opens are two events (inotify merges
+// identical consecutive events).
+template <typename F>
+int opens_of(const std::string& path, F&& f) {
+    const int fd = inotify_init1(IN_NONBLOCK);
+    EXPECT_GE(fd, 0);
+    EXPECT_GE(inotify_add_watch(fd, path.c_str(), IN_OPEN | IN_CLOSE), 0);
+    f();
+    int opens = 0;
+    alignas(inotify_event) char buffer[4096];
+    for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) > 0;) {
+        for (ssize_t at = 0; at < n;) {
+            const auto* event = reinterpret_cast<const inotify_event*>(buffer + at);
+            opens += (event->mask & IN_OPEN) != 0;
+            at += static_cast<ssize_t>(sizeof(inotify_event) + event->len);
+        }
+    }
+    ::close(fd);
+    return opens;
+}
+
+// load_obj reads the OBJ once: its pre-checks, tinyobjloader and the search for a bad face's
+// line all parse the same text (they opened the file up to four times).
+TEST(MeshLoaderObj, OpensTheFileOnce) {
+    TempDir dir;
+    dir.write("mats.mtl", kMtl);
+    const std::string path = dir.write("quads.obj", kQuadsObj);
+    std::vector<Material> materials;
+    EXPECT_EQ(opens_of(path, [&] { load_obj(path, materials, "here"); }), 1);
+    const std::string bad = dir.write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+    EXPECT_EQ(opens_of(bad, [&] { expect_input_error([&] { load_obj(bad, materials, "here"); }); }),
+              1);
+}
+
+// The material library is looked up next to the OBJ, also for a path without a directory.
+TEST(MeshLoaderObj, MaterialLibraryNextToAnObjInTheWorkingDirectory) {
+    TempDir dir;
+    dir.write("mats.mtl", kMtl);
+    dir.write("quads.obj", kQuadsObj);
+    const std::filesystem::path previous = std::filesystem::current_path();
+    std::filesystem::current_path(dir.path());
+    std::vector<Material> materials;
+    MeshImportStats stats;
+    EXPECT_NO_THROW(load_obj("quads.obj", materials, "here", &stats));
+    std::filesystem::current_path(previous);
+    EXPECT_EQ(stats.file_materials, 3u);
 }
 
 TEST(MeshLoaderObj, NoTrianglesIsAnError) {

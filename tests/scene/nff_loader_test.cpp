@@ -15,9 +15,12 @@
 
 #include "core/camera.h"
 #include "core/error.h"
+#include "tests/test_helpers.h"
 
 namespace rayo {
 namespace {
+
+using rayo_test::expect_vec3;
 
 // Joins lines with '\n', so that element i is line i + 1 of the file.
 std::string lines(std::initializer_list<const char*> items) {
@@ -32,12 +35,6 @@ std::string lines(std::initializer_list<const char*> items) {
 // A valid view block: lines 1-7.
 const std::string kView =
     lines({"v", "from 0 0 5", "at 0 0 0", "up 0 1 0", "angle 45", "hither 1", "resolution 64 48"});
-
-void expect_vec3(const Vec3& actual, float x, float y, float z, float tolerance = 1e-6f) {
-    EXPECT_NEAR(actual.x, x, tolerance);
-    EXPECT_NEAR(actual.y, y, tolerance);
-    EXPECT_NEAR(actual.z, z, tolerance);
-}
 
 // The loader must throw InputError whose where is exactly `where` and whose message contains
 // `fragment`; what() carries both.

@@ -3,14 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
-
 #include "apps/scene/default_scene.h"
 #include "apps/scene/renderer.h"
 #include "core/error.h"
+#include "tests/test_helpers.h"
 
 namespace rayo {
 namespace {
+
+using rayo_test::same_bits;
 
 // A unit Lambert sphere seen from far away, lit by a directional light travelling along the
 // view direction: each visible point has radiance kd·I·(n·L), and over the projected disk the
@@ -90,11 +91,6 @@ TEST(RenderOrientation, ObjectRightOfViewAxisLandsInRightHalf) {
     EXPECT_EQ(left, 0);
     EXPECT_GT(top, 0);  // row 0 is the top of the image
     EXPECT_EQ(bottom, 0);
-}
-
-bool same_bits(const Film& a, const Film& b) {
-    return a.rgba().size() == b.rgba().size() &&
-           std::memcmp(a.rgba().data(), b.rgba().data(), a.rgba().size() * sizeof(float)) == 0;
 }
 
 TEST(RenderDeterminism, SameBitsForAnyThreadCountAndTileSize) {
@@ -192,38 +188,82 @@ TEST(RenderDefaultScene, ExercisesShadowsReflectionAndRefraction) {
     for (float v : r.film.rgba()) ASSERT_TRUE(std::isfinite(v));
 }
 
-// A glass cube seen from above at an angle: rays refracted through the top face meet a side
-// face at more than the critical angle (for n = 1.5 the refracted ray is within 41.8° of the top
-// normal, so at least 48.2° from the side normal), and total internal reflection takes over.
-TEST(RenderTransport, GlassCubeShowsTotalInternalReflection) {
+// A right-angle glass prism (cross-section (-1, 1), (1, 1), (1, -1) in xz, y in [-2, 2]) seen
+// head-on through its z = 1 face by a narrow camera on the z axis, and an ambient-lit target
+// (x = 3, |y| <= 3, |z| <= 1.5) facing its x = 1 face. A camera ray enters almost along the face
+// normal and meets the hypotenuse x + z = 0 at 45° ± 1.9° (4° field of view: at most 2.83° off
+// axis outside, 1.89° inside for n = 1.5). For n = 1.5 the critical angle is asin(1/1.5) =
+// 41.8°, so every ray is totally reflected to +x, leaves through the x = 1 face near normal
+// incidence and sees the target. For n = 1.3 (critical 50.3°) every ray leaves through the
+// hypotenuse instead, along about (0.37, 0, -0.93) (Snell: 1.3·sin 45° = sin 66.8°), and passes
+// the target's plane at z < -5: it sees the background.
+SceneDescription prism_scene(float ior, const Vec3& target_colour, const Vec3& background) {
     SceneDescription d;
     d.source = "<tir test>";
-    d.scene.camera.eye = Vec3(3, 4, 3);
+    d.scene.camera.eye = Vec3(0, 0, 20);
     d.scene.camera.look_at = Vec3(0);
-    d.scene.camera.vfov_degrees = 30.0f;
-    d.scene.camera.width = 64;
-    d.scene.camera.height = 64;
-    Material glass;
-    glass.ka = glass.kd = Vec3(0.0f);
-    glass.transmit = Vec3(1.0f);
-    glass.ior = 1.5f;
+    d.scene.camera.vfov_degrees = 4.0f;
+    d.scene.camera.width = 24;
+    d.scene.camera.height = 24;
+    Material glass;  // no local colour, no mirror term: only the transmitted weight 0.8
+    glass.ka = glass.kd = glass.ks = Vec3(0.0f);
+    glass.transmit = Vec3(0.8f);
+    glass.ior = ior;
     d.shading.materials.push_back(glass);
-    TriangleMesh cube;
-    const Vec3 c[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
-                       {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
-    const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                             {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
-    for (const auto& f : faces) {
-        ASSERT_TRUE(cube.add_convex_polygon({c[f[0]], c[f[1]], c[f[2]], c[f[3]]}, {}, 0));
+    Material target;  // ambient only: its radiance is ka·Ia = target_colour everywhere
+    target.ka = target_colour;
+    target.kd = target.ks = Vec3(0.0f);
+    d.shading.materials.push_back(target);
+    const auto a = [](float y) { return Vec3(-1, y, 1); };
+    const auto b = [](float y) { return Vec3(1, y, 1); };
+    const auto c = [](float y) { return Vec3(1, y, -1); };
+    TriangleMesh prism;  // counter-clockwise seen from outside: outward normals
+    EXPECT_TRUE(prism.add_convex_polygon({a(-2), b(-2), b(2), a(2)}, {}, 0));  // z = 1, +z
+    EXPECT_TRUE(prism.add_convex_polygon({b(-2), c(-2), c(2), b(2)}, {}, 0));  // x = 1, +x
+    EXPECT_TRUE(prism.add_convex_polygon({a(-2), a(2), c(2), c(-2)}, {}, 0));  // hypotenuse
+    EXPECT_TRUE(prism.add_convex_polygon({a(-2), c(-2), b(-2)}, {}, 0));       // y = -2
+    EXPECT_TRUE(prism.add_convex_polygon({a(2), b(2), c(2)}, {}, 0));          // y = 2
+    d.scene.meshes.push_back(prism);
+    TriangleMesh plane;
+    EXPECT_TRUE(plane.add_convex_polygon(
+        {Vec3(3, -3, -1.5f), Vec3(3, -3, 1.5f), Vec3(3, 3, 1.5f), Vec3(3, 3, -1.5f)}, {}, 1));
+    d.scene.meshes.push_back(plane);
+    d.shading.ambient_light = Vec3(1.0f);
+    d.shading.background = background;
+    return d;
+}
+
+// Pixels with a channel more than 1e-6 from `expected`.
+int pixels_off(const Film& film, const Vec3& expected) {
+    int off = 0;
+    for (int y = 0; y < film.height(); ++y) {
+        for (int x = 0; x < film.width(); ++x) {
+            const Vec3 d = glm::abs(film.rgb(x, y) - expected);
+            off += !(glm::max(d.x, glm::max(d.y, d.z)) <= 1e-6f);
+        }
     }
-    d.scene.meshes.push_back(cube);
-    d.shading.background = Vec3(0.5f);
-    const RenderResult r = render_scene(d, 0, false);
-    EXPECT_GT(r.counters.refraction, 0u);
-    EXPECT_GT(r.counters.total_internal_reflections, 0u);
-    // TIR weight goes to the reflected ray: every TIR event spawns (or cuts) a reflection.
-    EXPECT_GE(r.counters.reflection + r.counters.depth_cut + r.counters.contribution_cut,
-              r.counters.total_internal_reflections);
+    return off;
+}
+
+// Whitted's rule (shading/whitted.cpp): total internal reflection sends the transmitted weight
+// into the reflected ray. Each pixel is then transmit (in) × transmit (TIR) × transmit (out) ×
+// the target, 0.8³·target, with exactly one TIR, one reflection and two refractions per pixel.
+// Without TIR (n = 1.3) the same path gives 0.8²·background and no TIR at all.
+TEST(RenderTransport, PrismTotallyReflectsWithTheTransmittedWeight) {
+    const Vec3 target(0.25f, 0.5f, 1.0f), background(0.1f, 0.2f, 0.3f);
+    const uint64_t pixels = 24 * 24;
+    const RenderResult tir = render_scene(prism_scene(1.5f, target, background), 0, false);
+    EXPECT_EQ(tir.counters.total_internal_reflections, pixels);
+    EXPECT_EQ(tir.counters.reflection, pixels);
+    EXPECT_EQ(tir.counters.refraction, 2 * pixels);
+    EXPECT_EQ(pixels_off(tir.film, 0.512f * target), 0);
+    rayo_test::expect_vec_near(tir.film.rgb(12, 12), 0.512f * target, 1e-6);
+    const RenderResult no_tir = render_scene(prism_scene(1.3f, target, background), 0, false);
+    EXPECT_EQ(no_tir.counters.total_internal_reflections, 0u);
+    EXPECT_EQ(no_tir.counters.reflection, 0u);
+    EXPECT_EQ(no_tir.counters.refraction, 2 * pixels);
+    EXPECT_EQ(pixels_off(no_tir.film, 0.64f * background), 0);
+    rayo_test::expect_vec_near(no_tir.film.rgb(12, 12), 0.64f * background, 1e-6);
 }
 
 TEST(RenderDepth, MaxDepthZeroTracesNoSecondaryRays) {

@@ -7,16 +7,14 @@
 
 #include <cmath>
 
+#include "tests/test_helpers.h"
+
 namespace rayo {
 namespace {
 
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
+using rayo_test::expect_vec_near;
 
-void expect_vec_near(const Vec3& actual, const Vec3& expected, float tolerance) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 // Incident direction at `degrees` from the normal (0,1,0), travelling down in the xy plane.
 Vec3 incident_at(double degrees) {

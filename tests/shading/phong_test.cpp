@@ -9,15 +9,12 @@
 
 #include "shading/light.h"
 #include "shading/material.h"
+#include "tests/test_helpers.h"
 
 namespace rayo {
 namespace {
 
-void expect_vec_near(const Vec3& actual, const Vec3& expected, float tolerance) {
-    EXPECT_NEAR(actual.x, expected.x, tolerance);
-    EXPECT_NEAR(actual.y, expected.y, tolerance);
-    EXPECT_NEAR(actual.z, expected.z, tolerance);
-}
+using rayo_test::expect_vec_near;
 
 // The geometry of the hand computations:
 //   N = (0,0,1), L = (1,0,1)/√2 (light 45° off the normal), V = (0,0,1) (eye straight above).
