@@ -10,8 +10,9 @@
 // With m the mean of the reference's RGB values, both are divided by m. A pixel is "off" when
 // one of its channels differs by more than T (default 0.05: 5 % of the mean). The mean relative
 // error is the mean absolute difference over all RGB values; PSNR = 20·log10(1 / RMS difference)
-// (peak = the reference's mean), the form ImageBufAlgo::compare and idiff use. (compare() itself
-// is not used: OIIO 2.4 sets its `error` flag whenever a pixel fails, which hides real errors.)
+// (peak = the reference's mean), the form ImageBufAlgo::compare and idiff use. compare() itself
+// is not used: with OIIO 2.4.7 it returned error = true for two valid images that merely differ,
+// so a real error could not be told from a failed pixel.
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
