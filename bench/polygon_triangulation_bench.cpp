@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "bench/bench_main.h"
-#include "core/polygon_triangulation.h"
+#include "core/shapes/polygon_triangulation.h"
 
 namespace rayo {
 namespace {

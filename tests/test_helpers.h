@@ -1,7 +1,6 @@
 #pragma once
 // The assertions several test binaries share: a 3-vector near expected components, and film
-// (image) comparisons. One version here instead of a copy per test file (DESIGN.md "tests/ ...
-// one helper header").
+// (image) comparisons: one version here instead of a copy per test file (docs/architecture.md).
 #include <gtest/gtest.h>
 
 #include <cstring>

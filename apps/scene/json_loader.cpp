@@ -812,7 +812,7 @@ void SceneParser::parse_object(const Json& value, const std::string& pointer, Sc
                 normals.push_back(direction((*n)[i], child(normals_pointer, i)));
             }
         }
-        if (!polygons.add_convex_polygon(points, normals, material_of(value, pointer))) {
+        if (!polygons.add_polygon(points, normals, material_of(value, pointer))) {
             fail(vertices_pointer, "expected a " + type + " with non-zero area");
         }
     } else {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/polygon_triangulation.h"
+#include "core/shapes/polygon_triangulation.h"
 
 namespace rayo {
 namespace {

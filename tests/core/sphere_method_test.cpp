@@ -167,7 +167,9 @@ TEST(SphereMethods, DoubleMathMatchesStableOnOrdinaryScenes) {
         SurfaceHit a, b;
         const bool ha = stable.intersect(ray, a), hb = twice.intersect(ray, b);
         ASSERT_EQ(ha, hb);
-        if (ha) EXPECT_NEAR(a.t, b.t, 2e-6f * a.t);
+        if (ha) {
+            EXPECT_NEAR(a.t, b.t, 2e-6f * a.t);
+        }
     }
 }
 

@@ -175,7 +175,7 @@ TEST(NffLoader, LightsArePointLightsWithOptionalColour) {
     EXPECT_EQ(tinted->attenuation.kind, Attenuation::Kind::None);
 }
 
-// The SPD's light rule (spd/README.md; DESIGN.md "Scene formats"): each of the N lights gets
+// The SPD's light rule (docs/nff.md, "Conventions"): each of the N lights gets
 // 1/sqrt(N) unless its `l` line gives a colour.
 std::vector<float> light_intensities(const SceneDescription& d) {
     std::vector<float> out;

@@ -1,4 +1,4 @@
-#include "core/polygon_triangulation.h"
+#include "core/shapes/polygon_triangulation.h"
 
 #include <algorithm>
 #include <cmath>
