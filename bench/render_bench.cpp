@@ -8,8 +8,8 @@
 //   RawEmbreePoint      rtcIntersect1 on Embree's built-in RTC_GEOMETRY_TYPE_SPHERE_POINT
 //   FullRender          the whole Whitted render (shadow + reflection rays included)
 #include <benchmark/benchmark.h>
-#include <tbb/global_control.h>
 #include <tbb/blocked_range2d.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include <vector>
@@ -49,7 +49,8 @@ void trace_all(benchmark::State& state, const std::vector<Ray>& rays, TraceOne t
         tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 4096),
                           [&](const tbb::blocked_range<size_t>& r) {
                               size_t local = 0;
-                              for (size_t i = r.begin(); i < r.end(); ++i) local += trace_one(rays[i]);
+                              for (size_t i = r.begin(); i < r.end(); ++i)
+                                  local += trace_one(rays[i]);
                               frame_hits += local;
                           });
         hits = frame_hits;
@@ -97,18 +98,19 @@ void trace_tiles(benchmark::State& state, const std::vector<Ray>& rays, TraceTil
     size_t hits = 0;
     for (auto _ : state) {
         std::atomic<size_t> frame_hits{0};
-        tbb::parallel_for(tbb::blocked_range2d<int>(0, kSize, 8, 0, kSize, 8),
-                          [&](const tbb::blocked_range2d<int>& tile) {
-                              Ray batch[64];
-                              int n = 0;
-                              for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
-                                  for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
-                                      batch[n++] = rays[size_t(y) * kSize + x];
-                                  }
-                              }
-                              frame_hits += trace_tile(batch, n);
-                          },
-                          tbb::simple_partitioner());
+        tbb::parallel_for(
+            tbb::blocked_range2d<int>(0, kSize, 8, 0, kSize, 8),
+            [&](const tbb::blocked_range2d<int>& tile) {
+                Ray batch[64];
+                int n = 0;
+                for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
+                    for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
+                        batch[n++] = rays[size_t(y) * kSize + x];
+                    }
+                }
+                frame_hits += trace_tile(batch, n);
+            },
+            tbb::simple_partitioner());
         hits = frame_hits;
     }
     state.counters["Mrays/s"] = benchmark::Counter(
@@ -166,8 +168,9 @@ void RawEmbreePoint(benchmark::State& state) {
     RTCDevice device = rtcNewDevice(nullptr);
     RTCScene rtc = rtcNewScene(device);
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
-    auto* points = static_cast<float*>(rtcSetNewGeometryBuffer(
-        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), scene.shapes.of<Sphere>().size()));
+    auto* points = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                               RTC_FORMAT_FLOAT4, 4 * sizeof(float),
+                                                               scene.shapes.of<Sphere>().size()));
     for (size_t i = 0; i < scene.shapes.of<Sphere>().size(); ++i) {
         points[4 * i + 0] = scene.shapes.of<Sphere>()[i].center.x;
         points[4 * i + 1] = scene.shapes.of<Sphere>()[i].center.y;
@@ -188,10 +191,9 @@ void RawEmbreePoint(benchmark::State& state) {
         v[3 * i + 1] = floor.positions[i].y;
         v[3 * i + 2] = floor.positions[i].z;
     }
-    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(tris, RTC_BUFFER_TYPE_INDEX, 0,
-                                                               RTC_FORMAT_UINT3,
-                                                               3 * sizeof(unsigned),
-                                                               floor.triangles.size()));
+    auto* idx = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(tris, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(unsigned), floor.triangles.size()));
     for (size_t i = 0; i < floor.triangles.size(); ++i) {
         for (int k = 0; k < 3; ++k) idx[3 * i + k] = floor.triangles[i][k];
     }

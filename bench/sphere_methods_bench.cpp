@@ -1,5 +1,5 @@
-// Throughput of every sphere method (docs/sphere-methods.md): Mrays/s per method × sphere count (10 … 10⁶)
-// × ray kind, plus BVH build time and Embree bytes per primitive.
+// Throughput of every sphere method (docs/sphere-methods.md): Mrays/s per method × sphere count (10
+// … 10⁶) × ray kind, plus BVH build time and Embree bytes per primitive.
 //   Kinds: Camera    256×256 pinhole rays in 8×8 coherent batches (Accel::intersect_coherent)
 //          Random    incoherent rays, random origins in the box and random directions
 //          Occlusion random segments between two points of the box (Accel::occluded)
@@ -36,7 +36,8 @@ Scene make_scene(int count) {
     Scene scene;
     scene.shapes.of<Sphere>().reserve(count);
     for (int i = 0; i < count; ++i) {
-        scene.shapes.of<Sphere>().push_back({Vec3(position(rng), position(rng), position(rng)), radius, 0});
+        scene.shapes.of<Sphere>().push_back(
+            {Vec3(position(rng), position(rng), position(rng)), radius, 0});
     }
     return scene;
 }
@@ -136,7 +137,9 @@ void SphereMethods(benchmark::State& state) {
     state.counters["build_ms"] = f.build_ms;
     state.counters["bytes/prim"] = static_cast<double>(f.accel->embree_bytes()) / count;
     state.SetLabel(std::string(kMethods[method]) + " " +
-                   (kind == kCamera ? "camera" : kind == kRandom ? "random" : "occlusion"));
+                   (kind == kCamera   ? "camera"
+                    : kind == kRandom ? "random"
+                                      : "occlusion"));
 }
 
 void register_all(benchmark::internal::Benchmark* b) {

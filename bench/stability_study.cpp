@@ -25,8 +25,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     rayo::write_csv(accuracy, rayo::run_stability_study(rayo::StabilityConfig{}));
-    rayo::write_csv(offsets,
-                    rayo::run_offset_sweep(rayo::OffsetConfig{}, rayo::offset_ray_origin));
+    rayo::write_csv(offsets, rayo::run_offset_sweep(rayo::OffsetConfig{}, rayo::offset_ray_origin));
     if (!accuracy || !offsets) {
         std::cerr << "stability_study: write failed in " << dir << "\n";
         return 1;

@@ -119,7 +119,9 @@ bool Accel::finish_hit(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& hit)
     return true;
 }
 
-void Accel::parameterize(SurfaceHit& hit) const { m_bindings.at(hit.geometry)->parameterize(hit); }
+void Accel::parameterize(SurfaceHit& hit) const {
+    m_bindings.at(hit.geometry)->parameterize(hit);
+}
 
 bool Accel::occluded(const Ray& ray) const {
     RTCIntersectContext context;

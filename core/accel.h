@@ -17,7 +17,7 @@
 namespace rayo {
 
 class Accel {
-public:
+  public:
     Accel(const Scene& scene, const AccelOptions& options = {});
     ~Accel();
     Accel(const Accel&) = delete;
@@ -44,7 +44,7 @@ public:
     RTCScene rtc_scene() const { return m_rtc_scene; }  // for raw-Embree baselines
     size_t primitive_count() const { return m_primitive_count; }
 
-private:
+  private:
     void attach(std::unique_ptr<GeometryBinding> binding);
     bool finish_hit(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& hit) const;
 

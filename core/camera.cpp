@@ -8,15 +8,21 @@
 namespace rayo {
 namespace {
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
-float radians(float degrees) { return degrees * kPi / 180.0f; }
-float degrees(float radians) { return radians * 180.0f / kPi; }
+float radians(float degrees) {
+    return degrees * kPi / 180.0f;
+}
+float degrees(float radians) {
+    return radians * 180.0f / kPi;
+}
 
 void check_fov(const std::optional<float>& fov, const std::string& where, const char* name) {
     if (fov && !(*fov > 0.0f && *fov < 180.0f)) {
-        throw InputError(where, std::string(name) + " must be in (0, 180) degrees, got " +
-                                    std::to_string(*fov));
+        throw InputError(
+            where, std::string(name) + " must be in (0, 180) degrees, got " + std::to_string(*fov));
     }
 }
 

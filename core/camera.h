@@ -2,10 +2,9 @@
 // The seed 002 window camera: EYE, LOOKAT, UP, distance, field of view and resolution define a
 // window in front of the eye; one ray goes through each pixel centre, pixel (0,0) top left.
 // Built for a right-handed world: camera +X is screen right, so the image is not mirrored.
+#include <glm/vec2.hpp>
 #include <optional>
 #include <string>
-
-#include <glm/vec2.hpp>
 
 #include "core/ray.h"
 
@@ -30,7 +29,7 @@ constexpr int kMaxImageSide = 32768;
 constexpr long long kMaxImagePixels = 1LL << 28;
 
 class Camera {
-public:
+  public:
     // Validates (throws InputError naming `where`): eye = look-at, up parallel to the view
     // direction, distance <= 0, fov outside (0°, 180°), non-finite values, resolution <= 0 or
     // above the limits.
@@ -62,7 +61,7 @@ public:
     float hfov_degrees() const { return m_hfov_degrees; }
     float vfov_degrees() const { return m_vfov_degrees; }
 
-private:
+  private:
     CameraDesc m_desc;
     Vec3 m_eye{0.0f};
     Vec3 m_view{0.0f}, m_right{0.0f}, m_up{0.0f};

@@ -13,13 +13,20 @@ std::string g_last_message;  // the error function's last message, read by fail_
 
 const char* error_name(RTCError error) {
     switch (error) {
-        case RTC_ERROR_NONE: return "none";
-        case RTC_ERROR_UNKNOWN: return "unknown error";
-        case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
-        case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
-        case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
-        case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
-        case RTC_ERROR_CANCELLED: return "cancelled";
+        case RTC_ERROR_NONE:
+            return "none";
+        case RTC_ERROR_UNKNOWN:
+            return "unknown error";
+        case RTC_ERROR_INVALID_ARGUMENT:
+            return "invalid argument";
+        case RTC_ERROR_INVALID_OPERATION:
+            return "invalid operation";
+        case RTC_ERROR_OUT_OF_MEMORY:
+            return "out of memory";
+        case RTC_ERROR_UNSUPPORTED_CPU:
+            return "unsupported CPU";
+        case RTC_ERROR_CANCELLED:
+            return "cancelled";
     }
     return "unknown error";
 }
@@ -69,6 +76,8 @@ void fail_on_embree_error(const char* what) {
                              (message.empty() ? "" : " (" + message + ")"));
 }
 
-long long embree_bytes_in_use() { return g_bytes.load(); }
+long long embree_bytes_in_use() {
+    return g_bytes.load();
+}
 
 }  // namespace rayo

@@ -7,7 +7,7 @@
 namespace rayo {
 
 class InputError : public std::runtime_error {
-public:
+  public:
     InputError(std::string where, const std::string& message)
         : std::runtime_error(where.empty() ? message : where + ": " + message),
           m_where(std::move(where)),
@@ -15,7 +15,7 @@ public:
     const std::string& where() const { return m_where; }
     const std::string& message() const { return m_message; }
 
-private:
+  private:
     std::string m_where;
     std::string m_message;
 };

@@ -12,7 +12,7 @@
 namespace rayo {
 
 class Film : public TileSink {
-public:
+  public:
     Film(int width, int height)
         : m_width(width), m_height(height), m_rgba(static_cast<size_t>(width) * height * 4, 0.0f) {}
 
@@ -40,7 +40,7 @@ public:
     const std::vector<float>& rgba() const { return m_rgba; }
     std::vector<float>& rgba() { return m_rgba; }
 
-private:
+  private:
     int m_width, m_height;
     std::vector<float> m_rgba;
 };

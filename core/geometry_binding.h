@@ -13,7 +13,7 @@
 namespace rayo {
 
 class GeometryBinding {
-public:
+  public:
     virtual ~GeometryBinding() = default;
     // The geometry to attach (created, not yet committed); the accel commits and owns it.
     virtual RTCGeometry geometry() const = 0;

@@ -19,7 +19,9 @@ std::string format_duration(double seconds) {
     return buffer;
 }
 
-bool ProgressReporter::stderr_is_terminal() { return isatty(STDERR_FILENO) == 1; }
+bool ProgressReporter::stderr_is_terminal() {
+    return isatty(STDERR_FILENO) == 1;
+}
 
 ProgressReporter::ProgressReporter(uint64_t total_work, std::string title, bool enabled)
     : m_total(total_work > 0 ? total_work : 1),
@@ -35,7 +37,9 @@ ProgressReporter::ProgressReporter(uint64_t total_work, std::string title, bool 
     });
 }
 
-ProgressReporter::~ProgressReporter() { finish(); }
+ProgressReporter::~ProgressReporter() {
+    finish();
+}
 
 void ProgressReporter::finish() {
     if (!m_enabled) return;

@@ -13,7 +13,7 @@
 namespace rayo {
 
 class ProgressReporter {
-public:
+  public:
     ProgressReporter(uint64_t total_work, std::string title, bool enabled);
     ~ProgressReporter();  // finishes the bar (a final 100% line when enabled)
     ProgressReporter(const ProgressReporter&) = delete;
@@ -25,7 +25,7 @@ public:
     // True when stderr is a terminal (the CLI's default for showing progress).
     static bool stderr_is_terminal();
 
-private:
+  private:
     void draw(bool final_line);
 
     uint64_t m_total;

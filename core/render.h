@@ -123,8 +123,7 @@ void render_tile(const Camera& camera, const Integrator& integrator, bool cohere
 template <typename Camera, typename Integrator>
 RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
                          const TileSettings& settings, TileSink& sink,
-                         ProgressReporter* progress = nullptr,
-                         const std::vector<int>& tiles = {}) {
+                         ProgressReporter* progress = nullptr, const std::vector<int>& tiles = {}) {
     const TileGrid grid(camera.width(), camera.height(), settings.tile_size);
     const auto spp = static_cast<uint32_t>(settings.spp > 0 ? settings.spp : 1);
     const float inverse_spp = 1.0f / static_cast<float>(spp);

@@ -2,7 +2,6 @@
 // Stateless random numbers: every value is a hash of (pixel, sample, dimension, frame), so the
 // image does not depend on the thread count or tile order (docs/architecture.md "Hot-path rules").
 #include <cstdint>
-
 #include <glm/vec2.hpp>
 
 namespace rayo {

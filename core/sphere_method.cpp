@@ -19,8 +19,7 @@ std::optional<SphereRepresentation> parse_sphere_method(const std::string& text)
         const char* end = text.data() + text.size();
         int level = -1;
         const auto [ptr, ec] = std::from_chars(begin, end, level);
-        if (ec != std::errc() || ptr != end || begin == end || level < 0 ||
-            level > kMaxMeshLevel) {
+        if (ec != std::errc() || ptr != end || begin == end || level < 0 || level > kMaxMeshLevel) {
             return std::nullopt;
         }
         r.method = SphereMethod::Mesh;
@@ -33,11 +32,16 @@ std::optional<SphereRepresentation> parse_sphere_method(const std::string& text)
 
 std::string sphere_method_name(const SphereRepresentation& r) {
     switch (r.method) {
-        case SphereMethod::BruteForce: return "bruteforce";
-        case SphereMethod::User: return "user";
-        case SphereMethod::EmbreePoint: return "embree-point";
-        case SphereMethod::Mesh: return "mesh:" + std::to_string(r.mesh_level);
-        case SphereMethod::Auto: return "auto";
+        case SphereMethod::BruteForce:
+            return "bruteforce";
+        case SphereMethod::User:
+            return "user";
+        case SphereMethod::EmbreePoint:
+            return "embree-point";
+        case SphereMethod::Mesh:
+            return "mesh:" + std::to_string(r.mesh_level);
+        case SphereMethod::Auto:
+            return "auto";
     }
     return "?";
 }
@@ -51,9 +55,12 @@ std::optional<SphereMath> parse_sphere_math(const std::string& text) {
 
 const char* sphere_math_name(SphereMath math) {
     switch (math) {
-        case SphereMath::Seed: return "seed";
-        case SphereMath::Stable: return "stable";
-        case SphereMath::Double: return "double";
+        case SphereMath::Seed:
+            return "seed";
+        case SphereMath::Stable:
+            return "stable";
+        case SphereMath::Double:
+            return "double";
     }
     return "?";
 }

@@ -26,7 +26,9 @@ struct SphereRepresentation {
 constexpr int kMaxMeshLevel = 7;  // 327,680 triangles per sphere
 
 // Triangles per sphere for a tessellation level (icosahedron, each level splits a face in 4).
-inline long long icosphere_triangles(int level) { return 20LL << (2 * level); }
+inline long long icosphere_triangles(int level) {
+    return 20LL << (2 * level);
+}
 
 // "bruteforce", "user", "embree-point", "mesh:N" (N in 0..kMaxMeshLevel), "auto"; nullopt if
 // the text is none of these.

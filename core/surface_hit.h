@@ -2,7 +2,6 @@
 // What the shader needs to know about the nearest hit: filled by the shape that was hit
 // (core/shapes/shape.h) through the accel.
 #include <cstdint>
-
 #include <glm/vec2.hpp>
 
 #include "core/math.h"

@@ -33,7 +33,7 @@ struct Tile {
 };
 
 class TileGrid {
-public:
+  public:
     TileGrid(int image_width, int image_height, int tile_size = kDefaultTileSize)
         : m_width(image_width),
           m_height(image_height),
@@ -58,7 +58,7 @@ public:
         return t;
     }
 
-private:
+  private:
     static int checked_tile_size(int size) {
         if (!valid_tile_size(size)) {
             throw InputError("tile size", "expected " + tile_size_expectation() + ", got " +

@@ -11,7 +11,7 @@
 namespace rayo {
 
 class TileSink {
-public:
+  public:
     virtual ~TileSink() = default;
     // Before the first tile: the grid the tiles come from.
     virtual void begin(const TileGrid& grid) { (void)grid; }

@@ -62,8 +62,8 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
         Vec3 origin, direction;
         read_ray_lane(ray, n, i, origin, direction);
         ShapeHit h;
-        if (!Call::run(shape, origin, direction, RTCRayN_tnear(ray, n, i),
-                       RTCRayN_tfar(ray, n, i), h)) {
+        if (!Call::run(shape, origin, direction, RTCRayN_tnear(ray, n, i), RTCRayN_tfar(ray, n, i),
+                       h)) {
             continue;
         }
         RTCRayN_tfar(ray, n, i) = h.t;
@@ -99,7 +99,7 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
 // the hit surface from S::surface.
 template <typename S, typename Call = CallNearest>
 class ShapeBinding : public GeometryBinding {
-public:
+  public:
     ShapeBinding(const std::vector<S>& shapes, uint32_t shape_index)
         : m_shapes(shapes), m_shape_index(shape_index) {
         using Traits = ShapeTraits<S>;
@@ -125,7 +125,8 @@ public:
     void surface(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& out) const override {
         const uint32_t prim = rayhit.hit.primID;
         const S& shape = m_shapes[prim];
-        const ShapeHit hit{rayhit.ray.tfar, Vec3(rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z)};
+        const ShapeHit hit{rayhit.ray.tfar,
+                           Vec3(rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z)};
         out.t = hit.t;
         shape.surface(ray, hit, out);
         out.material = shape.material;
@@ -136,7 +137,7 @@ public:
         m_shapes[hit.primitive].parameterization(hit.position, hit);
     }
 
-private:
+  private:
     const std::vector<S>& m_shapes;
     uint32_t m_shape_index;
     std::vector<typename ShapeTraits<S>::Intersector> m_intersectors;  // when S names one

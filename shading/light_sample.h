@@ -3,9 +3,8 @@
 // the unit direction toward the light, the distance to it (infinity for directional lights),
 // the radiance arriving along that direction before the cosine, and the pdf of the direction
 // (1 for lights that are a single direction: point and directional).
-#include <limits>
-
 #include <glm/vec2.hpp>
+#include <limits>
 
 #include "core/math.h"
 

@@ -41,7 +41,9 @@ struct SurfaceCoefficients {
     Vec3 transmit{0.0f};  // perfect specular transmission weight, seed 001
     float ior = 1.0f;     // index of refraction of the inside (outside is 1)
 
-    bool transmissive() const { return transmit.x > 0.0f || transmit.y > 0.0f || transmit.z > 0.0f; }
+    bool transmissive() const {
+        return transmit.x > 0.0f || transmit.y > 0.0f || transmit.z > 0.0f;
+    }
     bool reflective() const { return reflect.x > 0.0f || reflect.y > 0.0f || reflect.z > 0.0f; }
 };
 

@@ -23,6 +23,8 @@ inline std::optional<Vec3> refract(const Vec3& incident, const Vec3& normal, flo
 }
 
 // Critical angle in radians for light going from a denser medium out (n21 = n_out/n_in < 1).
-inline float critical_angle(float n21) { return std::asin(n21); }
+inline float critical_angle(float n21) {
+    return std::asin(n21);
+}
 
 }  // namespace rayo

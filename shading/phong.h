@@ -37,8 +37,7 @@ inline Vec3 specular_term(const SurfaceCoefficients& m, const Vec3& normal, cons
 // Diffuse plus specular for one light of radiance `light` (Ii·f(d)): seed 000 eq. [24]/[28].
 inline Vec3 phong_direct(const SurfaceCoefficients& m, const Vec3& normal, const Vec3& to_light,
                          const Vec3& to_eye, const Vec3& light) {
-    return light * (lambert_term(m, normal, to_light) +
-                    specular_term(m, normal, to_light, to_eye));
+    return light * (lambert_term(m, normal, to_light) + specular_term(m, normal, to_light, to_eye));
 }
 
 }  // namespace rayo

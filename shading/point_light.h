@@ -15,10 +15,12 @@ struct Attenuation {
 
     float factor(float distance) const {
         switch (kind) {
-            case Kind::Linear: return 1.0f / (distance + d0);
+            case Kind::Linear:
+                return 1.0f / (distance + d0);
             case Kind::Quadratic:
                 return std::min(1.0f, 1.0f / (a0 + a1 * distance + a2 * distance * distance));
-            case Kind::None: break;
+            case Kind::None:
+                break;
         }
         return 1.0f;
     }

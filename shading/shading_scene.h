@@ -13,7 +13,7 @@ struct ShadingScene {
     std::vector<Material> materials;
     std::vector<Light> lights;
     std::vector<Texture> textures;  // MaterialTextures index this table
-    Vec3 ambient_light{1.0f};  // Ia, seed 000 eq. [20]
+    Vec3 ambient_light{1.0f};       // Ia, seed 000 eq. [20]
     Vec3 background{0.0f};
 };
 

@@ -184,8 +184,8 @@ Texture make_texture(const std::string& kind) {
         t.ramp = ColorRamp(
             {{0.0f, srgb8_to_linear(40, 100, 162)}, {1.0f, srgb8_to_linear(91, 187, 201)}});
     } else {
-        throw InputError("", "unknown texture '" + kind + "' (expected one of: " +
-                                 texture_kind_list() + ")");
+        throw InputError(
+            "", "unknown texture '" + kind + "' (expected one of: " + texture_kind_list() + ")");
     }
     return t;
 }

@@ -94,10 +94,10 @@ bool WhittedIntegrator::light_sample(const ShadingPoint& p, const SurfaceHit& hi
     shadow.direction = to_light;
     shadow.tnear = 0.0f;
     // Stop just short of a point light so the light's own position is never "in the way".
-    shadow.tfar = std::isfinite(light_distance)
-                      ? glm::dot(hit.position - p.shadow_origin, to_light) +
-                            light_distance * (1.0f - 1e-5f)
-                      : std::numeric_limits<float>::infinity();
+    shadow.tfar =
+        std::isfinite(light_distance)
+            ? glm::dot(hit.position - p.shadow_origin, to_light) + light_distance * (1.0f - 1e-5f)
+            : std::numeric_limits<float>::infinity();
     return true;
 }
 
@@ -118,9 +118,9 @@ Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth, 
     return add_transport(ray, hit, p, depth, weight, color, counters);
 }
 
-Vec3 WhittedIntegrator::add_transport(const Ray& ray, const SurfaceHit& hit,
-                                      const ShadingPoint& p, int depth, const Vec3& weight,
-                                      const Vec3& color, RayCounters& counters) const {
+Vec3 WhittedIntegrator::add_transport(const Ray& ray, const SurfaceHit& hit, const ShadingPoint& p,
+                                      int depth, const Vec3& weight, const Vec3& color,
+                                      RayCounters& counters) const {
     const SurfaceCoefficients& material = p.material();
     if (!material.reflective() && !material.transmissive()) return color;
     if (depth >= m_settings.max_depth) {
@@ -213,10 +213,9 @@ void WhittedIntegrator::radiance_coherent(const Ray* rays, int count, Vec3* radi
             }
         }
         for (int i = 0; i < n; ++i) {
-            radiance[first + i] =
-                found[i] ? add_transport(batch[i], hits[i], points[i], 0, Vec3(1.0f), color[i],
-                                         counters)
-                         : m_scene.background;
+            radiance[first + i] = found[i] ? add_transport(batch[i], hits[i], points[i], 0,
+                                                           Vec3(1.0f), color[i], counters)
+                                           : m_scene.background;
         }
     }
 }

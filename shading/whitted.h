@@ -11,12 +11,12 @@
 namespace rayo {
 
 struct WhittedSettings {
-    int max_depth = 5;              // camera ray = depth 0; no child rays beyond this depth
-    float min_contribution = 1e-3f; // children whose weight falls below this are not traced
+    int max_depth = 5;               // camera ray = depth 0; no child rays beyond this depth
+    float min_contribution = 1e-3f;  // children whose weight falls below this are not traced
 };
 
 class WhittedIntegrator {
-public:
+  public:
     WhittedIntegrator(const Accel& accel, const ShadingScene& scene, const WhittedSettings& s)
         : m_accel(accel), m_scene(scene), m_settings(s) {}
 
@@ -24,10 +24,9 @@ public:
     Vec3 radiance(const Ray& ray, RayCounters& counters) const;
     // The same for a batch of coherent camera rays (a tile's): identical values ray by ray,
     // with the camera and shadow rays traced as Embree streams.
-    void radiance_coherent(const Ray* rays, int count, Vec3* radiance,
-                           RayCounters& counters) const;
+    void radiance_coherent(const Ray* rays, int count, Vec3* radiance, RayCounters& counters) const;
 
-private:
+  private:
     // What shading a hit needs, computed once: the side the ray arrived on, normals after
     // bump mapping, the (textured) material, the spawned-ray origin.
     struct ShadingPoint {
@@ -41,8 +40,8 @@ private:
     ShadingPoint prepare(const Ray& ray, const SurfaceHit& hit) const;
     // The shadow ray toward `light`, the unit direction to it and its radiance at the hit;
     // false when the light is behind the surface.
-    bool light_sample(const ShadingPoint& p, const SurfaceHit& hit, const Light& light,
-                      Ray& shadow, Vec3& to_light, Vec3& light_radiance) const;
+    bool light_sample(const ShadingPoint& p, const SurfaceHit& hit, const Light& light, Ray& shadow,
+                      Vec3& to_light, Vec3& light_radiance) const;
     // `color` (the local model) plus the reflected and refracted children (seed 001).
     Vec3 add_transport(const Ray& ray, const SurfaceHit& hit, const ShadingPoint& p, int depth,
                        const Vec3& weight, const Vec3& color, RayCounters& counters) const;

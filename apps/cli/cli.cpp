@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "bench/lab/accuracy_bench.h"
 #include "apps/scene/default_scene.h"
 #include "apps/scene/renderer.h"
 #include "apps/scene/scene_loader.h"
+#include "bench/lab/accuracy_bench.h"
 #include "core/error.h"
 #include "core/image/image_output.h"
 #include "core/progress.h"
@@ -425,8 +425,7 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
     const Camera camera = Camera::create(d.scene.camera, d.source + "#/camera");
     out << "scene " << d.source << "\n"
         << "resolution " << camera.width() << "x" << camera.height() << "\n"
-        << "fov " << camera.hfov_degrees() << "x" << camera.vfov_degrees() << " degrees\n"
-        ;
+        << "fov " << camera.hfov_degrees() << "x" << camera.vfov_degrees() << " degrees\n";
     for (const auto& [name, count] : d.scene.shape_counts()) out << name << " " << count << "\n";
     out << "meshes " << d.scene.meshes.size() << "\n"
         << "triangles " << d.scene.triangle_count() << "\n"

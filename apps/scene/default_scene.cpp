@@ -94,8 +94,8 @@ SceneDescription make_default_scene() {
     TriangleMesh ground;
     ground.name = "floor";
     const float e = 12.0f;
-    ground.add_convex_polygon({Vec3(-e, 0, e), Vec3(e, 0, e), Vec3(e, 0, -e), Vec3(-e, 0, -e)},
-                              {}, floor_id);
+    ground.add_convex_polygon({Vec3(-e, 0, e), Vec3(e, 0, e), Vec3(e, 0, -e), Vec3(-e, 0, -e)}, {},
+                              floor_id);
     d.scene.meshes.push_back(std::move(ground));
     d.scene.meshes.push_back(make_octahedron(Vec3(2.1f, 0.75f, -0.5f), 0.75f, blue_id));
 

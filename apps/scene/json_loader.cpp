@@ -201,8 +201,8 @@ class SceneParser {
             fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
         const double v = value.get<double>();
         if (!within_scene_magnitude(v)) {
-            fail(pointer, std::string("expected ") + kSceneMagnitudeRule + ", got " +
-                              describe(value));
+            fail(pointer,
+                 std::string("expected ") + kSceneMagnitudeRule + ", got " + describe(value));
         }
         if ((bound == Bound::Positive && !(v > 0.0)) ||
             (bound == Bound::NonNegative && !(v >= 0.0))) {
@@ -298,11 +298,16 @@ class SceneParser {
 
         static const char* expected(FieldKind kind) {
             switch (kind) {
-                case FieldKind::Point: return "[x, y, z]";
-                case FieldKind::Direction: return "[x, y, z], non-zero";
-                case FieldKind::Number: return "a number";
-                case FieldKind::Positive: return "a number > 0";
-                case FieldKind::NonNegative: return "a number >= 0";
+                case FieldKind::Point:
+                    return "[x, y, z]";
+                case FieldKind::Direction:
+                    return "[x, y, z], non-zero";
+                case FieldKind::Number:
+                    return "a number";
+                case FieldKind::Positive:
+                    return "a number > 0";
+                case FieldKind::NonNegative:
+                    return "a number >= 0";
             }
             return "a value";
         }
@@ -472,9 +477,9 @@ void SceneParser::parse_camera(const Json& value, const std::string& pointer,
 void SceneParser::parse_render(const Json& value, const std::string& pointer,
                                RenderSettings& s) const {
     require_object(value, pointer, "a render settings object");
-    check_keys(value, pointer,
-               {"spp", "max_depth", "min_contribution", "tile_size", "sphere_math",
-                "sphere_method"});
+    check_keys(
+        value, pointer,
+        {"spp", "max_depth", "min_contribution", "tile_size", "sphere_math", "sphere_method"});
     if (const Json* v = find(value, "spp")) s.spp = integer(*v, child(pointer, "spp"), 1, 1 << 20);
     if (const Json* v = find(value, "max_depth")) {
         s.whitted.max_depth = integer(*v, child(pointer, "max_depth"), 0, 64);
@@ -498,9 +503,10 @@ void SceneParser::parse_render(const Json& value, const std::string& pointer,
         const std::optional<SphereRepresentation> method =
             parse_sphere_method(v->get<std::string>());
         if (!method) {
-            fail(where, "expected one of \"auto\", \"user\", \"bruteforce\", \"embree-point\", "
-                        "\"mesh:N\" (N in 0.." + std::to_string(kMaxMeshLevel) + "), got " +
-                            describe(*v));
+            fail(where,
+                 "expected one of \"auto\", \"user\", \"bruteforce\", \"embree-point\", "
+                 "\"mesh:N\" (N in 0.." +
+                     std::to_string(kMaxMeshLevel) + "), got " + describe(*v));
         }
         s.spheres = *method;
     }
@@ -586,9 +592,8 @@ ColorRamp SceneParser::parse_ramp(const Json& value, const std::string& pointer)
 Texture SceneParser::parse_texture(const Json& value, const std::string& pointer,
                                    const std::string& name) const {
     require_object(value, pointer, "a texture object");
-    const std::string type =
-        choice(require(value, pointer, "type", "a texture type"), child(pointer, "type"),
-               texture_kind_names());
+    const std::string type = choice(require(value, pointer, "type", "a texture type"),
+                                    child(pointer, "type"), texture_kind_names());
     Texture t = make_texture(type);
     t.name = name;
     if (type == "constant") {
@@ -771,14 +776,13 @@ void SceneParser::parse_object(const Json& value, const std::string& pointer, Sc
     require_object(value, pointer, "an object");
     // The registered shapes by name (core/shapes/registry.h), then the triangle-mesh kinds.
     std::vector<std::string> types;
-    out.scene.shapes.for_each([&](auto& shapes) {
-        types.push_back(std::decay_t<decltype(shapes)>::value_type::kName);
-    });
+    out.scene.shapes.for_each(
+        [&](auto& shapes) { types.push_back(std::decay_t<decltype(shapes)>::value_type::kName); });
     for (const char* kind : {"triangle", "polygon", "mesh"}) types.push_back(kind);
     std::vector<std::string> quoted;
     for (const std::string& t : types) quoted.push_back("\"" + t + "\"");
-    const std::string type = choice(require(value, pointer, "type", join_or(quoted)),
-                                    child(pointer, "type"), types);
+    const std::string type =
+        choice(require(value, pointer, "type", join_or(quoted)), child(pointer, "type"), types);
     bool shape_read = false;
     out.scene.shapes.for_each([&](auto& shapes) {
         if (type == std::decay_t<decltype(shapes)>::value_type::kName) {

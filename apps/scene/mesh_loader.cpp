@@ -153,7 +153,8 @@ size_t find_bad_face_line(const std::string& obj_text) {
 
 // tinyobjloader reads a missing coordinate as 0 and "inf" or "1e39" as whatever its parser
 // makes of them, and drops faces of fewer than 3 vertices without a word; so the loader checks
-// the statements it uses first, each error naming "path:line" (the bad-input catalogue, tests/cli/bad_input_test.cpp).
+// the statements it uses first, each error naming "path:line" (the bad-input catalogue,
+// tests/cli/bad_input_test.cpp).
 void check_obj_text(const std::string& obj_text, const std::string& path) {
     std::istringstream file(obj_text);
     std::string line;

@@ -174,8 +174,8 @@ float parse_float(std::string_view token, const Where& where, const char* what) 
         throw InputError(where, std::string(what) + ": expected a number, got " + quoted(token));
     }
     if (!within_scene_magnitude(value)) {
-        throw InputError(where, std::string(what) + ": expected " + kSceneMagnitudeRule +
-                                    ", got " + quoted(token));
+        throw InputError(where, std::string(what) + ": expected " + kSceneMagnitudeRule + ", got " +
+                                    quoted(token));
     }
     return static_cast<float>(value);
 }

@@ -25,8 +25,8 @@ void check_material_ids(const SceneDescription& d) {
     const size_t count = d.shading.materials.size();
     auto check = [&](uint32_t id, const std::string& what) {
         if (id >= count) {
-            throw InputError(d.source, what + " uses material " + std::to_string(id) + " but only " +
-                                           std::to_string(count) + " are defined");
+            throw InputError(d.source, what + " uses material " + std::to_string(id) +
+                                           " but only " + std::to_string(count) + " are defined");
         }
     };
     d.scene.shapes.for_each([&](const auto& shapes) {
@@ -60,14 +60,17 @@ void check_material_ids(const SceneDescription& d) {
 
 }  // namespace
 
-int default_thread_count() { return tbb::info::default_concurrency(); }
+int default_thread_count() {
+    return tbb::info::default_concurrency();
+}
 
 RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress) {
     const Camera camera = Camera::create(description.scene.camera, description.source + "#/camera");
     check_material_ids(description);
     RenderResult result;
     result.threads = threads > 0 ? threads : default_thread_count();
-    // Limits TBB and Embree's BVH build alike (docs/architecture.md: no task_scheduler_init in oneTBB).
+    // Limits TBB and Embree's BVH build alike (docs/architecture.md: no task_scheduler_init in
+    // oneTBB).
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                               static_cast<size_t>(result.threads));
 
@@ -88,8 +91,8 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     // Embree's built-in sphere kernel rounds differently in its packet and single-ray forms
     // (5% of balls_3's pixels change, docs/performance.md), so embree-point stays on single rays
     // to keep the promise that the coherent path changes no bits.
-    tiles.coherent = description.settings.coherent &&
-                     result.spheres.spheres.method != SphereMethod::EmbreePoint;
+    tiles.coherent =
+        description.settings.coherent && result.spheres.spheres.method != SphereMethod::EmbreePoint;
     result.coherent = tiles.coherent;
 
     start = std::chrono::steady_clock::now();

@@ -15,7 +15,7 @@ struct RenderResult {
     double render_seconds = 0.0;
     size_t primitives = 0;
     int threads = 0;
-    SphereChoice spheres;  // the sphere method and math that ran, and why
+    SphereChoice spheres;   // the sphere method and math that ran, and why
     bool coherent = false;  // camera/shadow rays traced as per-tile Embree streams
 };
 

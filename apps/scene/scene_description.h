@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "core/scene.h"
-#include "core/tile_grid.h"
 #include "core/sphere_method.h"
+#include "core/tile_grid.h"
 #include "shading/shading_scene.h"
 #include "shading/whitted.h"
 

@@ -46,8 +46,8 @@ SphereChoice choose_sphere_method(const SceneDescription& d, const Camera& camer
         // The stable float form loses about one ulp of the coordinates' magnitude on the
         // perpendicular distance (docs/sphere-methods.md): a silhouette shift of ε·M world
         // units, ε·M/(distance·pixel angle) pixels.
-        const float magnitude = glm::max(max_abs_component(s.center),
-                                         max_abs_component(camera.desc().eye));
+        const float magnitude =
+            glm::max(max_abs_component(s.center), max_abs_component(camera.desc().eye));
         worst_float_error_px = glm::max(
             worst_float_error_px, 4.0f * kFloatEpsilon * magnitude / (distance * pixel_angle));
     }

@@ -17,8 +17,9 @@ void add_children(std::vector<Sphere>& spheres, const Vec3& center, float radius
     const Vec3 v = glm::cross(axis, u);
     const float child_radius = radius / 3.0f;
     auto place = [&](float azimuth, float elevation) {
-        const Vec3 direction = std::cos(elevation) * (std::cos(azimuth) * u + std::sin(azimuth) * v) +
-                               std::sin(elevation) * axis;
+        const Vec3 direction =
+            std::cos(elevation) * (std::cos(azimuth) * u + std::sin(azimuth) * v) +
+            std::sin(elevation) * axis;
         const Vec3 child_center = center + (radius + child_radius) * direction;
         spheres.push_back({child_center, child_radius, material});
         add_children(spheres, child_center, child_radius, direction, depth - 1, material);
@@ -57,9 +58,9 @@ SceneDescription make_sphereflake(int depth, int width, int height) {
     TriangleMesh ground;
     ground.name = "floor";
     ground.one_sided = true;
-    ground.add_convex_polygon({Vec3(12, 12, -0.5f), Vec3(-12, 12, -0.5f), Vec3(-12, -12, -0.5f),
-                               Vec3(12, -12, -0.5f)},
-                              {}, 0);
+    ground.add_convex_polygon(
+        {Vec3(12, 12, -0.5f), Vec3(-12, 12, -0.5f), Vec3(-12, -12, -0.5f), Vec3(12, -12, -0.5f)},
+        {}, 0);
     d.scene.meshes.push_back(std::move(ground));
     d.scene.shapes.of<Sphere>().push_back({Vec3(0.0f), 0.5f, 1});
     add_children(d.scene.shapes.of<Sphere>(), Vec3(0.0f), 0.5f, Vec3(0, 0, 1), depth, 1);

@@ -12,9 +12,9 @@
 #include "apps/scene/renderer.h"
 #include "apps/scene/sphere_method_choice.h"
 #include "apps/scene/sphereflake.h"
+#include "bench/lab/sphere_stability.h"
 #include "core/accel.h"
 #include "core/error.h"
-#include "bench/lab/sphere_stability.h"
 #include "shading/whitted.h"
 
 namespace rayo {

@@ -76,8 +76,8 @@ struct Rng {
 };
 
 // The line origin + t·direction (direction of any length) against the sphere, in long double
-// with the stable form (docs/architecture.md "Numerics", generalised to |d| ≠ 1): a·t² + 2b·t + c = 0 with
-// a = d·d, b = f·d, c = (|f|−r)(|f|+r); Δ/4 = a·r² − |f×d|² (Lagrange's identity: the
+// with the stable form (docs/architecture.md "Numerics", generalised to |d| ≠ 1): a·t² + 2b·t + c =
+// 0 with a = d·d, b = f·d, c = (|f|−r)(|f|+r); Δ/4 = a·r² − |f×d|² (Lagrange's identity: the
 // perpendicular distance, no cancellation of b² against a·c); roots q/a and c/q.
 struct Reference {
     bool hit = false;  // a root in (0, ∞)

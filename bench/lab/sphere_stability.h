@@ -1,7 +1,8 @@
 #pragma once
-// The sphere stability study (docs/stability.md): where each sphere method and precision fails, measured
-// on deterministic random rays against a long-double reference, and how often spawned rays re-hit
-// the sphere they leave for each origin-offset method. Tests, docs/stability.md and the CLI use it.
+// The sphere stability study (docs/stability.md): where each sphere method and precision fails,
+// measured on deterministic random rays against a long-double reference, and how often spawned rays
+// re-hit the sphere they leave for each origin-offset method. Tests, docs/stability.md and the CLI
+// use it.
 #include <cstdint>
 #include <functional>
 #include <ostream>
@@ -136,7 +137,8 @@ enum class SpawnKind {
 const char* spawn_kind_name(SpawnKind k);
 
 // The origin-offset function under study: (hit, side normal) -> origin. shading/ provides
-// rayo::offset_ray_origin; core cannot name it (core knows nothing of shading, docs/architecture.md).
+// rayo::offset_ray_origin; core cannot name it (core knows nothing of shading,
+// docs/architecture.md).
 using OffsetFunction = std::function<Vec3(const SurfaceHit&, const Vec3&)>;
 
 // One configuration: camera-like primary rays from `distance_ratio` radii hit the sphere (aimed

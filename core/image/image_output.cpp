@@ -252,8 +252,8 @@ void write_image(const Film& film, const std::string& path, const OutputOptions&
         write_atomically(path, spec, OIIO::TypeDesc::UINT16, pixels.data());
     } else {
         OIIO::ImageSpec spec(film.width(), film.height(), channels, OIIO::TypeDesc::UINT8);
-        // zlib level 1 and no row filter instead of OIIO's defaults: half the write time, files ~14%
-        // larger (docs/performance.md); PNG stays lossless either way.
+        // zlib level 1 and no row filter instead of OIIO's defaults: half the write time, files
+        // ~14% larger (docs/performance.md); PNG stays lossless either way.
         if (format == Format::Png) {
             spec.attribute("png:compressionLevel", 1);
             spec.attribute("png:filter", 8);  // PNG_FILTER_NONE: no per-row filter search

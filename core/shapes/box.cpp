@@ -16,6 +16,7 @@ bool Box::slabs(const Vec3& origin, const Vec3& direction, float& t_enter, Vec3&
                 float& t_exit, Vec3& n_exit) const {
     t_enter = -std::numeric_limits<float>::infinity();
     t_exit = std::numeric_limits<float>::infinity();
+    n_enter = n_exit = Vec3(0.0f);
     for (int axis = 0; axis < 3; ++axis) {
         const float o = origin[axis], d = direction[axis];
         if (d == 0.0f) {

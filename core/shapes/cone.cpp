@@ -30,8 +30,8 @@ void cone_bounds(const Cone& cone, Vec3& lower, Vec3& upper) {
     upper = glm::max(cone.base + cone.base_radius * extent, cone.apex + cone.apex_radius * extent);
 }
 
-bool intersect_cone(const ConeFrame& cone, const Vec3& origin, const Vec3& direction,
-                    float tnear, float tfar, float& t_out, Vec3& normal) {
+bool intersect_cone(const ConeFrame& cone, const Vec3& origin, const Vec3& direction, float tnear,
+                    float tfar, float& t_out, Vec3& normal) {
     if (cone.height == 0.0) return false;
     const DVec3& base = cone.base;
     const DVec3& axis = cone.axis;
@@ -80,7 +80,9 @@ bool intersect_cone(const ConeFrame& cone, const Vec3& origin, const Vec3& direc
     return false;
 }
 
-ConeFrame Cone::intersector() const { return make_cone_frame(*this); }
+ConeFrame Cone::intersector() const {
+    return make_cone_frame(*this);
+}
 
 std::optional<FieldProblem> Cone::problem() const {
     if (!(glm::length(apex - base) > 0.0f)) {

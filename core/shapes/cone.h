@@ -60,10 +60,10 @@ void cone_bounds(const Cone& cone, Vec3& lower, Vec3& upper);
 
 // Nearest hit in (tnear, tfar) of a ray (unit direction) with the open cone; the outward normal
 // at the hit goes to `normal`. Solves |w⊥ + t·d⊥|² = (r(s))², s the axial coordinate, in double.
-bool intersect_cone(const ConeFrame& cone, const Vec3& origin, const Vec3& direction,
-                    float tnear, float tfar, float& t_out, Vec3& normal);
-inline bool intersect_cone(const Cone& cone, const Vec3& origin, const Vec3& direction,
-                           float tnear, float tfar, float& t_out, Vec3& normal) {
+bool intersect_cone(const ConeFrame& cone, const Vec3& origin, const Vec3& direction, float tnear,
+                    float tfar, float& t_out, Vec3& normal);
+inline bool intersect_cone(const Cone& cone, const Vec3& origin, const Vec3& direction, float tnear,
+                           float tfar, float& t_out, Vec3& normal) {
     return intersect_cone(make_cone_frame(cone), origin, direction, tnear, tfar, t_out, normal);
 }
 

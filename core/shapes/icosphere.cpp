@@ -11,9 +11,9 @@ Icosphere make_icosphere(int level) {
     Icosphere s;
     // The 12 vertices of an icosahedron: cyclic permutations of (0, ±1, ±φ).
     const float phi = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    const Vec3 corners[12] = {{-1, phi, 0}, {1, phi, 0},   {-1, -phi, 0}, {1, -phi, 0},
-                              {0, -1, phi}, {0, 1, phi},   {0, -1, -phi}, {0, 1, -phi},
-                              {phi, 0, -1}, {phi, 0, 1},   {-phi, 0, -1}, {-phi, 0, 1}};
+    const Vec3 corners[12] = {{-1, phi, 0}, {1, phi, 0}, {-1, -phi, 0}, {1, -phi, 0},
+                              {0, -1, phi}, {0, 1, phi}, {0, -1, -phi}, {0, 1, -phi},
+                              {phi, 0, -1}, {phi, 0, 1}, {-phi, 0, -1}, {-phi, 0, 1}};
     for (const Vec3& c : corners) s.positions.push_back(glm::normalize(c));
     s.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                    {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},

@@ -28,9 +28,9 @@ struct TriangleMesh {
     bool add_convex_polygon(const std::vector<Vec3>& vertices,
                             const std::vector<Vec3>& vertex_normals, uint32_t material);
     // Appends a simple planar polygon, convex or concave (NFF polygons,
-    // core/shapes/polygon_triangulation.h): convex ones as the same fan as add_convex_polygon, others
-    // ear-clipped; triangles keep the polygon's winding and zero-area ones are dropped. Returns
-    // false (adding nothing) in the same cases as add_convex_polygon.
+    // core/shapes/polygon_triangulation.h): convex ones as the same fan as add_convex_polygon,
+    // others ear-clipped; triangles keep the polygon's winding and zero-area ones are dropped.
+    // Returns false (adding nothing) in the same cases as add_convex_polygon.
     bool add_polygon(const std::vector<Vec3>& vertices, const std::vector<Vec3>& vertex_normals,
                      uint32_t material);
 };

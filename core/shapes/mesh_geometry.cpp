@@ -26,23 +26,23 @@ void cull_back_faces(const RTCFilterFunctionNArguments* args) {
 }
 
 class MeshBinding : public GeometryBinding {
-public:
+  public:
     MeshBinding(const TriangleMesh& mesh, uint32_t mesh_index, uint32_t shape_index)
         : m_mesh(mesh), m_mesh_index(mesh_index), m_shape_index(shape_index) {
         m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_TRIANGLE);
         // Copies into Embree-owned buffers: Embree reads vertices as 16 bytes, so a shared
         // std::vector<Vec3> would be over-read at its end.
-        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-            m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(float) * 3,
-            mesh.positions.size()));
+        auto* vertices = static_cast<float*>(
+            rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                    sizeof(float) * 3, mesh.positions.size()));
         for (size_t v = 0; v < mesh.positions.size(); ++v) {
             vertices[3 * v + 0] = mesh.positions[v].x;
             vertices[3 * v + 1] = mesh.positions[v].y;
             vertices[3 * v + 2] = mesh.positions[v].z;
         }
-        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-            m_geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(unsigned) * 3,
-            mesh.triangles.size()));
+        auto* indices = static_cast<unsigned*>(
+            rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    sizeof(unsigned) * 3, mesh.triangles.size()));
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             indices[3 * t + 0] = mesh.triangles[t][0];
             indices[3 * t + 1] = mesh.triangles[t][1];
@@ -98,7 +98,7 @@ public:
         hit.dpdu = m_mesh.positions[tri[1]] - m_mesh.positions[tri[0]];
     }
 
-private:
+  private:
     const TriangleMesh& m_mesh;
     uint32_t m_mesh_index;
     uint32_t m_shape_index;

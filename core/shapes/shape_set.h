@@ -30,7 +30,7 @@ class ShapeSet;
 
 template <typename... Shapes>
 class ShapeSet<ShapeList<Shapes...>> {
-public:
+  public:
     // The type's index in the list (SurfaceHit::shape).
     template <typename S>
     static constexpr uint32_t index_of() {
@@ -64,7 +64,7 @@ public:
         return n;
     }
 
-private:
+  private:
     std::tuple<std::vector<Shapes>...> m_shapes;
 };
 

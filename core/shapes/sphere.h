@@ -3,7 +3,8 @@
 //  - SphereMath::Seed: the seed's algebraic form B = 2·Rd·(R0−Sc), C = |R0−Sc|² − Sr²,
 //    D = B² − 4C, t = (−B ∓ √D)/2. Kept for comparison: it cancels catastrophically for small
 //    spheres far from the origin of the ray.
-//  - SphereMath::Stable (default, docs/architecture.md "Numerics"): Δ from the perpendicular distance
+//  - SphereMath::Stable (default, docs/architecture.md "Numerics"): Δ from the perpendicular
+//  distance
 //    r² − |f − (f·d)d|², roots via q = −(b + sign(b)√Δ), t = c/q and t = q, c = (|f|−r)(|f|+r).
 //  - SphereMath::Double: the stable form evaluated in double precision, t rounded to float at
 //    the end: the accuracy reference of the analytic-vs-BVH comparison.
@@ -53,10 +54,10 @@ bool intersect_sphere_seed(const glm::vec<3, T>& origin, const glm::vec<3, T>& d
                            const glm::vec<3, T>& center, T radius, T tnear, T tfar, T& t_out,
                            bool& far_root) {
     const glm::vec<3, T> f = origin - center;
-    const T b = T(2) * glm::dot(direction, f);           // seed 000 eq. [6]
-    const T c = glm::dot(f, f) - radius * radius;        // seed 000 eq. [7]
-    const T discriminant = b * b - T(4) * c;             // seed 000 eq. [8]
-    if (!(discriminant > T(0))) return false;            // D <= 0: miss (tangent counts as miss)
+    const T b = T(2) * glm::dot(direction, f);     // seed 000 eq. [6]
+    const T c = glm::dot(f, f) - radius * radius;  // seed 000 eq. [7]
+    const T discriminant = b * b - T(4) * c;       // seed 000 eq. [8]
+    if (!(discriminant > T(0))) return false;      // D <= 0: miss (tangent counts as miss)
     const T root = std::sqrt(discriminant);
     const T t0 = (-b - root) / T(2);
     if (t0 > tnear && t0 < tfar) {
@@ -113,8 +114,8 @@ bool intersect_sphere_stable(const glm::vec<3, T>& origin, const glm::vec<3, T>&
 
 template <typename T>
 inline bool intersect_sphere(SphereMath math, const glm::vec<3, T>& origin,
-                      const glm::vec<3, T>& direction, const glm::vec<3, T>& center, T radius,
-                      T tnear, T tfar, T& t_out, bool& far_root) {
+                             const glm::vec<3, T>& direction, const glm::vec<3, T>& center,
+                             T radius, T tnear, T tfar, T& t_out, bool& far_root) {
     switch (math) {
         case SphereMath::Seed:
             return intersect_sphere_seed(origin, direction, center, radius, tnear, tfar, t_out,
@@ -125,18 +126,18 @@ inline bool intersect_sphere(SphereMath math, const glm::vec<3, T>& origin,
             double t = 0.0;
             const bool hit = intersect_sphere_stable(
                 glm::dvec3(origin), glm::dvec3(direction), glm::dvec3(center),
-                static_cast<double>(radius), static_cast<double>(tnear),
-                static_cast<double>(tfar), t, far_root);
+                static_cast<double>(radius), static_cast<double>(tnear), static_cast<double>(tfar),
+                t, far_root);
             if (!hit) return false;
             const T rounded = static_cast<T>(t);
             if (!(rounded > tnear && rounded < tfar)) return false;
             t_out = rounded;
             return true;
         }
-        case SphereMath::Stable: break;
+        case SphereMath::Stable:
+            break;
     }
-    return intersect_sphere_stable(origin, direction, center, radius, tnear, tfar, t_out,
-                                   far_root);
+    return intersect_sphere_stable(origin, direction, center, radius, tnear, tfar, t_out, far_root);
 }
 
 // Seed 000 eq. [9]: n = (P − Sc)/Sr, flipped for a far-root hit.

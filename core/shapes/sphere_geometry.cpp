@@ -30,13 +30,13 @@ void sphere_surface(const std::vector<Sphere>& spheres, uint32_t shape_index, co
 
 // Embree's RTC_GEOMETRY_TYPE_SPHERE_POINT: its own kernel, rayo's re-projected surface.
 class PointSphereBinding : public GeometryBinding {
-public:
+  public:
     PointSphereBinding(const std::vector<Sphere>& spheres, uint32_t shape_index)
         : m_spheres(spheres), m_shape_index(shape_index) {
         m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_SPHERE_POINT);
-        auto* points = static_cast<float*>(rtcSetNewGeometryBuffer(
-            m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float),
-            spheres.size()));
+        auto* points = static_cast<float*>(
+            rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
+                                    4 * sizeof(float), spheres.size()));
         for (size_t i = 0; i < spheres.size(); ++i) {
             points[4 * i + 0] = spheres[i].center.x;
             points[4 * i + 1] = spheres[i].center.y;
@@ -53,7 +53,7 @@ public:
         m_spheres[hit.primitive].parameterization(hit.position, hit);
     }
 
-private:
+  private:
     const std::vector<Sphere>& m_spheres;
     uint32_t m_shape_index;
     RTCGeometry m_geometry = nullptr;
@@ -63,7 +63,7 @@ private:
 // surface: no re-projection, so its silhouette and facet error show in the image, which is what
 // the comparison measures.
 class IcosphereBinding : public GeometryBinding {
-public:
+  public:
     IcosphereBinding(const std::vector<Sphere>& spheres, uint32_t shape_index,
                      const SphereRepresentation& representation)
         : m_spheres(spheres), m_shape_index(shape_index), m_smooth(representation.mesh_smooth) {
@@ -74,9 +74,9 @@ public:
         auto* vertices = static_cast<float*>(
             rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                     3 * sizeof(float), spheres.size() * vertex_count));
-        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-            m_geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
-            spheres.size() * unit.triangles.size()));
+        auto* indices = static_cast<unsigned*>(
+            rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    3 * sizeof(unsigned), spheres.size() * unit.triangles.size()));
         for (size_t i = 0; i < spheres.size(); ++i) {
             for (size_t v = 0; v < vertex_count; ++v) {
                 const Vec3 p = spheres[i].center + spheres[i].radius * unit.positions[v];
@@ -112,8 +112,8 @@ public:
         out.shading_normal = flat;
         if (m_smooth) {
             const float u = rayhit.hit.u, v = rayhit.hit.v;
-            out.shading_normal = glm::normalize((1.0f - u - v) * n0 + u * m_normals[tri[1]] +
-                                                v * m_normals[tri[2]]);
+            out.shading_normal =
+                glm::normalize((1.0f - u - v) * n0 + u * m_normals[tri[1]] + v * m_normals[tri[2]]);
         }
         out.object_size = m_spheres[sphere].radius;
         out.material = m_spheres[sphere].material;
@@ -124,7 +124,7 @@ public:
         m_spheres[hit.primitive].parameterization(hit.position, hit);
     }
 
-private:
+  private:
     const std::vector<Sphere>& m_spheres;
     uint32_t m_shape_index;
     bool m_smooth;
@@ -213,7 +213,7 @@ void brute_force_occluded(const RTCOccludedFunctionNArguments* args) {
 }
 
 class BruteForceBinding : public GeometryBinding {
-public:
+  public:
     BruteForceBinding(const std::vector<Sphere>& spheres, uint32_t shape_index, SphereMath math)
         : m_spheres(spheres), m_shape_index(shape_index) {
         m_data.spheres = &spheres;
@@ -240,7 +240,7 @@ public:
         m_spheres[hit.primitive].parameterization(hit.position, hit);
     }
 
-private:
+  private:
     const std::vector<Sphere>& m_spheres;
     uint32_t m_shape_index;
     BruteForceData m_data{};
@@ -261,7 +261,8 @@ std::unique_ptr<GeometryBinding> make_binding(const std::vector<Sphere>& spheres
                     return std::make_unique<
                         ShapeBinding<Sphere, SphereNearest<SphereMath::Double>>>(spheres,
                                                                                  shape_index);
-                case SphereMath::Stable: break;
+                case SphereMath::Stable:
+                    break;
             }
             return std::make_unique<ShapeBinding<Sphere, SphereNearest<SphereMath::Stable>>>(
                 spheres, shape_index);
@@ -271,7 +272,8 @@ std::unique_ptr<GeometryBinding> make_binding(const std::vector<Sphere>& spheres
             return std::make_unique<IcosphereBinding>(spheres, shape_index, options.spheres);
         case SphereMethod::BruteForce:
             return std::make_unique<BruteForceBinding>(spheres, shape_index, options.sphere_math);
-        case SphereMethod::Auto: break;
+        case SphereMethod::Auto:
+            break;
     }
     throw std::logic_error("Accel: the auto sphere method must be resolved by the caller");
 }

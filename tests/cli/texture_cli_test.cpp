@@ -14,7 +14,6 @@
 namespace rayo {
 namespace {
 
-
 // ---- `rayo texture NAME` ---------------------------------------------------------------------
 
 int cli(std::vector<std::string> args, std::string* err_text = nullptr) {

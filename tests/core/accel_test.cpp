@@ -54,7 +54,8 @@ Scene sphere_scene() {
                             Vec3(2, -3, -2),    Vec3(0, 4, -3),      Vec3(-2.5f, -2, 3),
                             Vec3(0.3f, 0.2f, 5)};
     const float radii[] = {1.0f, 0.8f, 1.5f, 0.5f, 2.0f, 0.25f, 0.05f};
-    for (uint32_t i = 0; i < 7; ++i) scene.shapes.of<Sphere>().push_back(Sphere{centers[i], radii[i], i});
+    for (uint32_t i = 0; i < 7; ++i)
+        scene.shapes.of<Sphere>().push_back(Sphere{centers[i], radii[i], i});
     return scene;
 }
 
@@ -353,9 +354,12 @@ TEST(AccelTriangles, OneSidedMeshDoesNotHideWhatIsBehindIt) {
 
 TEST(AccelCones, AgreeWithDirectCalls) {
     Scene scene;
-    scene.shapes.of<Cone>().push_back(Cone{Vec3(0, -1, 0), 1.0f, Vec3(0, 2, 0), 1.0f, 0});   // cylinder
-    scene.shapes.of<Cone>().push_back(Cone{Vec3(3, 0, 0), 1.0f, Vec3(3, 2, 0), 0.0f, 1});    // pointed
-    scene.shapes.of<Cone>().push_back(Cone{Vec3(-3, 0, 1), 0.5f, Vec3(-1, 1, 3), 1.5f, 2});  // tilted
+    scene.shapes.of<Cone>().push_back(
+        Cone{Vec3(0, -1, 0), 1.0f, Vec3(0, 2, 0), 1.0f, 0});  // cylinder
+    scene.shapes.of<Cone>().push_back(
+        Cone{Vec3(3, 0, 0), 1.0f, Vec3(3, 2, 0), 0.0f, 1});  // pointed
+    scene.shapes.of<Cone>().push_back(
+        Cone{Vec3(-3, 0, 1), 0.5f, Vec3(-1, 1, 3), 1.5f, 2});  // tilted
     const Accel accel(scene);
     EXPECT_EQ(accel.primitive_count(), 3u);
     std::mt19937 rng(5);
@@ -375,7 +379,8 @@ TEST(AccelCones, AgreeWithDirectCalls) {
         Vec3 n, n_ref(0.0f);
         int ref = -1;
         for (size_t k = 0; k < scene.shapes.of<Cone>().size(); ++k) {
-            if (intersect_cone(scene.shapes.of<Cone>()[k], ray.origin, ray.direction, ray.tnear, tfar, t, n)) {
+            if (intersect_cone(scene.shapes.of<Cone>()[k], ray.origin, ray.direction, ray.tnear,
+                               tfar, t, n)) {
                 tfar = t;
                 n_ref = n;
                 ref = int(k);

@@ -1,5 +1,7 @@
 // The selectable sphere methods (bruteforce, user, embree-point, mesh:N) and precisions
 // (seed, stable, double) against each other and the icosphere tessellation.
+#include "core/sphere_method.h"
+
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -7,7 +9,6 @@
 
 #include "core/accel.h"
 #include "core/shapes/icosphere.h"
-#include "core/sphere_method.h"
 
 namespace rayo {
 namespace {
@@ -62,8 +63,8 @@ Scene random_spheres(int count, uint32_t seed) {
     std::uniform_real_distribution<float> position(-10.0f, 10.0f), radius(0.2f, 1.5f);
     Scene scene;
     for (int i = 0; i < count; ++i) {
-        scene.shapes.of<Sphere>().push_back({Vec3(position(rng), position(rng), position(rng)), radius(rng),
-                                 static_cast<uint32_t>(i)});
+        scene.shapes.of<Sphere>().push_back({Vec3(position(rng), position(rng), position(rng)),
+                                             radius(rng), static_cast<uint32_t>(i)});
     }
     return scene;
 }
@@ -147,8 +148,8 @@ TEST(SphereMethods, MeshConvergesToTheSphereWithLevel) {
             // icosphere lies inside the sphere by at most the facet sagitta.
             if (ha) {
                 const Sphere& s = scene.shapes.of<Sphere>()[a.material];
-                max_error = std::max(
-                    max_error, 1.0 - double(glm::length(b.position - s.center)) / s.radius);
+                max_error = std::max(max_error,
+                                     1.0 - double(glm::length(b.position - s.center)) / s.radius);
             }
         }
         EXPECT_LE(max_error, kIcosphereMaxDepth[level] + 1e-5) << name;
@@ -178,9 +179,8 @@ TEST(SphereMethods, DoubleMathMatchesStableOnOrdinaryScenes) {
 TEST(SphereMethods, CoherentBatchesMatchSingleRays) {
     Scene scene = random_spheres(100, 21);
     TriangleMesh floor;
-    floor.add_convex_polygon({Vec3(-20, -20, -12), Vec3(20, -20, -12), Vec3(20, 20, -12),
-                              Vec3(-20, 20, -12)},
-                             {}, 0);
+    floor.add_convex_polygon(
+        {Vec3(-20, -20, -12), Vec3(20, -20, -12), Vec3(20, 20, -12), Vec3(-20, 20, -12)}, {}, 0);
     scene.meshes.push_back(floor);
     const std::vector<Ray> rays = random_rays(1000, 22);
     for (const char* method : {"user", "bruteforce", "mesh:1"}) {
@@ -229,7 +229,6 @@ TEST(SphereMethods, SphereBelowOneUlpOfItsPositionGivesFiniteHits) {
     }
     EXPECT_EQ(hit.geometric_normal, -ray.direction);
 }
-
 
 }  // namespace
 }  // namespace rayo

@@ -241,8 +241,8 @@ TEST(SphereAccuracy, SeedFormLosesHitsAtDistance1e4) {
 
 TEST(SphereAccuracy, HitsAndMissesAtDistance1e4) {
     // Rays within 1.5 radii of the centre: 5,880 of 10,000 hit in the double reference.
-    // Measured: seed form 5,289 mismatches (52.9%; the design notes quote ~45%); stable form 2, both
-    // within 1e-2 of tangency (|r² − p²|), where float rounding of the ray itself decides.
+    // Measured: seed form 5,289 mismatches (52.9%; the design notes quote ~45%); stable form 2,
+    // both within 1e-2 of tangency (|r² − p²|), where float rounding of the ray itself decides.
     const FarSphereStats s = measure_far_sphere(1e4, 1.5, 10000, 7);
     EXPECT_GT(s.reference_hits, 5000);
     EXPECT_LT(s.reference_hits, 7000);

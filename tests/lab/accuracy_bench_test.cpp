@@ -1,5 +1,7 @@
 // The speed-against-accuracy study: its image metrics, what it must find on its own scenes,
 // and the `rayo bench accuracy` command end to end (CSV and charts).
+#include "bench/lab/accuracy_bench.h"
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -8,10 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <vector>
 #include <string>
+#include <vector>
 
-#include "bench/lab/accuracy_bench.h"
 #include "apps/scene/renderer.h"
 #include "apps/scene/sphere_method_choice.h"
 #include "core/shapes/icosphere.h"

@@ -241,7 +241,9 @@ struct ErrorCase {
 };
 
 // Printed by ctest's test list instead of the struct's raw bytes.
-void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const ErrorCase& c, std::ostream* os) {
+    *os << c.name;
+}
 
 class JsonLoaderErrors : public ::testing::TestWithParam<ErrorCase> {};
 

@@ -288,7 +288,8 @@ TEST(NffLoader, ConeGeometryInBothForms) {
     EXPECT_FLOAT_EQ(two_line.base_radius, 0.5f);
     expect_vec3(two_line.apex, 0.0f, 0.0f, 2.0f);
     EXPECT_FLOAT_EQ(two_line.apex_radius, 0.25f);
-    const Cone& one_line = d.scene.shapes.of<Cone>()[1];  // all on the `c` line, as the SPD files write it
+    const Cone& one_line =
+        d.scene.shapes.of<Cone>()[1];  // all on the `c` line, as the SPD files write it
     expect_vec3(one_line.base, 1.0f, 1.0f, 1.0f);
     EXPECT_FLOAT_EQ(one_line.base_radius, 0.3f);
     expect_vec3(one_line.apex, 1.0f, 1.0f, 3.0f);
@@ -490,7 +491,8 @@ TEST(NffLoader, FileAndStringAgree) {
     const std::string path = dir.write("every.nff", kEveryEntity);
     const SceneDescription from_file = load_nff_file(path);
     const SceneDescription from_string = load_nff_string(kEveryEntity, path);
-    EXPECT_EQ(from_file.scene.shapes.of<Sphere>().size(), from_string.scene.shapes.of<Sphere>().size());
+    EXPECT_EQ(from_file.scene.shapes.of<Sphere>().size(),
+              from_string.scene.shapes.of<Sphere>().size());
     EXPECT_EQ(from_file.scene.shapes.of<Cone>().size(), from_string.scene.shapes.of<Cone>().size());
     EXPECT_EQ(from_file.scene.triangle_count(), from_string.scene.triangle_count());
     EXPECT_EQ(from_file.shading.materials.size(), from_string.shading.materials.size());

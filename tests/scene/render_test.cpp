@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+
 #include "apps/scene/default_scene.h"
 #include "apps/scene/renderer.h"
 #include "core/error.h"

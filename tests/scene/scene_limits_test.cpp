@@ -57,13 +57,13 @@ TEST(SceneLimits, EveryLoaderRefusesWithTheSameRule) {
     EXPECT_EQ(json.message(), "expected " + rule + ", got 1e+30") << json.what();
 
     const InputError nff = refusal([] {
-        load_nff_string("v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n"
-                        "resolution 8 8\ns 0 0 0 1e30\n",
-                        "t.nff");
+        load_nff_string(
+            "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n"
+            "resolution 8 8\ns 0 0 0 1e30\n",
+            "t.nff");
     });
     EXPECT_EQ(nff.where(), "t.nff:8");
-    EXPECT_NE(nff.message().find(": expected " + rule + ", got "), std::string::npos)
-        << nff.what();
+    EXPECT_NE(nff.message().find(": expected " + rule + ", got "), std::string::npos) << nff.what();
 
     const std::filesystem::path dir = std::filesystem::temp_directory_path() /
                                       ("rayo_scene_limits_" + std::to_string(::getpid()));

@@ -2,13 +2,14 @@
 // Every branch of choose_sphere_method answers "user", so the tests assert what the choice
 // decides and could get wrong: which branch (and reason) a scene built for it takes, the math it
 // keeps, and the numbers it reports against values computed here from the documented model.
+#include "apps/scene/sphere_method_choice.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <regex>
 #include <string>
 
-#include "apps/scene/sphere_method_choice.h"
 #include "core/shapes/icosphere.h"
 
 namespace rayo {
@@ -117,8 +118,9 @@ TEST(SphereMethodChoice, ReportsTheWorstErrorAndLargestSphereOverAllSpheres) {
     for (bool small_first : {true, false}) {
         SceneDescription d = one_sphere_scene(Vec3(0), 1.0f, 5.0f);
         const Sphere small{Vec3(0, 0, 4), 0.1f, 0};
-        d.scene.shapes.of<Sphere>().insert(small_first ? d.scene.shapes.of<Sphere>().begin() : d.scene.shapes.of<Sphere>().end(),
-                               small);
+        d.scene.shapes.of<Sphere>().insert(
+            small_first ? d.scene.shapes.of<Sphere>().begin() : d.scene.shapes.of<Sphere>().end(),
+            small);
         const SphereChoice c = choose(d);
         const WithinReason r = parse_within(c.reason);
         expect_relative(c.worst_float_error_px, float_error_px(5.0, 1.0), 1e-5);
@@ -134,7 +136,7 @@ TEST(SphereMethodChoice, TinySpheresFarFromTheOriginAreReportedNotDoubled) {
     const SceneDescription d = one_sphere_scene(Vec3(1e5f, 0, 0), 1e-3f, 1e-2f);
     const SphereChoice c = choose(d);
     EXPECT_EQ(c.spheres.method, SphereMethod::User);
-    EXPECT_EQ(c.math, SphereMath::Stable);  // not raised to double
+    EXPECT_EQ(c.math, SphereMath::Stable);           // not raised to double
     const double error = float_error_px(1e5, 1e-2);  // about 2948 px
     expect_relative(c.worst_float_error_px, error, 1e-4);
     const auto [quoted, budget] = parse_beyond(c.reason);

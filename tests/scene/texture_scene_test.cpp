@@ -70,10 +70,10 @@ TEST(TextureRender, TexturedSphereDiffersFromUntexturedAndUntexturedIsUnchanged)
     EXPECT_EQ(differing_pixels(base.film, render_scene(flat_bump, 2, false).film), 0);
 }
 
-// The determinism promise (docs/architecture.md "Hot-path rules": output must not depend on the thread
-// count or tile order) for textured scenes, end to end from their JSON: procedural colours and
-// bump maps seen directly and through reflection and refraction, antialiased, give the same bits
-// with one thread and with two threads over other tile sizes (odd image sizes: partial tiles).
+// The determinism promise (docs/architecture.md "Hot-path rules": output must not depend on the
+// thread count or tile order) for textured scenes, end to end from their JSON: procedural colours
+// and bump maps seen directly and through reflection and refraction, antialiased, give the same
+// bits with one thread and with two threads over other tile sizes (odd image sizes: partial tiles).
 TEST(TextureRender, ExampleScenesGiveTheSameBitsForAnyThreadCountAndTileSize) {
     for (const char* name : {"pool_bottom.json", "marble.json", "cells.json"}) {
         SceneDescription d = load_scene_file(std::string(RAYO_SCENES_DIR) + "/" + name);
@@ -143,9 +143,8 @@ TEST(TextureJson, MaterialsNameTexturesForColoursAndBump) {
 // Every kind of shading/texture.h's list is a JSON texture "type", with that kind's defaults.
 TEST(TextureJson, EveryTextureKindIsAType) {
     for (const std::string& kind : texture_kind_names()) {
-        const SceneDescription d =
-            load_json_string(scene_with(R"({"a": {"type": ")" + kind + R"("}})", R"({})"),
-                             "t.json", ".");
+        const SceneDescription d = load_json_string(
+            scene_with(R"({"a": {"type": ")" + kind + R"("}})", R"({})"), "t.json", ".");
         ASSERT_EQ(d.shading.textures.size(), 1u) << kind;
         EXPECT_EQ(d.shading.textures[0].map.index(), make_texture(kind).map.index()) << kind;
     }

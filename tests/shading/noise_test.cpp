@@ -273,8 +273,8 @@ TEST(NoiseDeterminism, GoldenValuesOfAnIndependentImplementation) {
     EXPECT_NEAR(int_noise_3d(3, -7, 11, 42), 0.552090824, 1e-9);
     const FbmParams params;  // 6 octaves, persistence 1/2, lacunarity 2
     for (const NoiseGolden& g : kNoiseGolden) {
-        SCOPED_TRACE(::testing::Message() << "at (" << g.p.x << ", " << g.p.y << ", " << g.p.z
-                                          << ")");
+        SCOPED_TRACE(::testing::Message()
+                     << "at (" << g.p.x << ", " << g.p.y << ", " << g.p.z << ")");
         EXPECT_NEAR(value_noise_3d(g.p, 5), g.value5, 2e-6);
         EXPECT_NEAR(gradient_noise_3d(g.p, 11), g.gradient11, 2e-6);
         EXPECT_NEAR(fbm(g.p, params, 3), g.fbm3, 2e-6);
