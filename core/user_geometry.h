@@ -72,7 +72,7 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
         RTCHitN_Ng_z(hit, n, i) = h.normal.z;
         RTCHitN_u(hit, n, i) = 0.0f;
         RTCHitN_v(hit, n, i) = 0.0f;
-        RTCHitN_primID(hit, n, i) = args->primID;
+        RTCHitN_primID(hit, n, i) = args->primID + h.part;
         RTCHitN_geomID(hit, n, i) = args->geomID;
         RTCHitN_instID(hit, n, i, 0) = args->context->instID[0];
     }

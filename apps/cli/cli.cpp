@@ -52,7 +52,7 @@ render options:
   --max-depth N            maximum reflection/refraction depth, 0..64 [scene's, default 5]
   --nff-light-intensity X  intensity of each NFF light without a colour, a number >= 0
                            [1/sqrt(number of lights), the SPD's rule; 1 gives unit lights]
-  --tile-size N            tile side in pixels [64]
+  --tile-size N            tile side in pixels, a multiple of 16 [64]
   --sphere-method M        auto (default), user, bruteforce, embree-point, mesh:N (N 0..7:
                            20·4^N triangles per sphere)
   --sphere-math P          stable (default), seed (seed 000's algebraic form), double

@@ -42,10 +42,13 @@ struct ShapeCrossing {
 constexpr int kMaxShapeCrossings = 2;  // every current shape is convex or a quadric
 
 // What the intersection reports: the distance, and a normal at the hit (any length, outward)
-// that surface() may use instead of recomputing it.
+// that surface() may use instead of recomputing it. `part` is for aggregate primitives (the
+// brute-force spheres: one Embree primitive, every sphere a part): it is added to the primitive
+// id reported to Embree.
 struct ShapeHit {
     float t = 0.0f;
     Vec3 normal{0.0f};
+    uint32_t part = 0;
 };
 
 // The first of a shape's crossings inside (tnear, tfar), for shapes whose nearest() is no faster.

@@ -47,6 +47,23 @@ struct Sphere {
     void parameterization(const Vec3& position, SurfaceHit& out) const;
 };
 
+// The seed's rule for two roots t0 <= t1: the near root if it lies in (tnear, tfar), else the
+// far root (the ray starts inside: seed 000 hits at t1 and flips the normal).
+template <typename T>
+bool nearest_root_in_window(T t0, T t1, T tnear, T tfar, T& t_out, bool& far_root) {
+    if (t0 > tnear && t0 < tfar) {
+        t_out = t0;
+        far_root = false;
+        return true;
+    }
+    if (t1 > tnear && t1 < tfar) {
+        t_out = t1;
+        far_root = true;
+        return true;
+    }
+    return false;
+}
+
 // `direction` must be unit length. Returns true and fills `hit` for the nearest root in
 // (tnear, tfar). Templated on the scalar so the double reference shares the code.
 template <typename T>
@@ -59,19 +76,8 @@ bool intersect_sphere_seed(const glm::vec<3, T>& origin, const glm::vec<3, T>& d
     const T discriminant = b * b - T(4) * c;       // seed 000 eq. [8]
     if (!(discriminant > T(0))) return false;      // D <= 0: miss (tangent counts as miss)
     const T root = std::sqrt(discriminant);
-    const T t0 = (-b - root) / T(2);
-    if (t0 > tnear && t0 < tfar) {
-        t_out = t0;
-        far_root = false;
-        return true;
-    }
-    const T t1 = (-b + root) / T(2);
-    if (t1 > tnear && t1 < tfar) {
-        t_out = t1;
-        far_root = true;
-        return true;
-    }
-    return false;
+    return nearest_root_in_window((-b - root) / T(2), (-b + root) / T(2), tnear, tfar, t_out,
+                                  far_root);
 }
 
 // Both roots t0 <= t1 of the stable form; false when the line misses (or only touches).
@@ -98,18 +104,8 @@ bool intersect_sphere_stable(const glm::vec<3, T>& origin, const glm::vec<3, T>&
                              const glm::vec<3, T>& center, T radius, T tnear, T tfar, T& t_out,
                              bool& far_root) {
     T t0, t1;
-    if (!sphere_roots_stable(origin, direction, center, radius, t0, t1)) return false;
-    if (t0 > tnear && t0 < tfar) {
-        t_out = t0;
-        far_root = false;
-        return true;
-    }
-    if (t1 > tnear && t1 < tfar) {
-        t_out = t1;
-        far_root = true;
-        return true;
-    }
-    return false;
+    return sphere_roots_stable(origin, direction, center, radius, t0, t1) &&
+           nearest_root_in_window(t0, t1, tnear, tfar, t_out, far_root);
 }
 
 template <typename T>

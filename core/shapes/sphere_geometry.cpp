@@ -17,22 +17,38 @@ struct SphereNearest {
     }
 };
 
-// The sphere's surface at a hit reported by any representation that reports the sphere's index.
-void sphere_surface(const std::vector<Sphere>& spheres, uint32_t shape_index, const Ray& ray,
-                    float t, uint32_t index, SurfaceHit& out) {
-    const Sphere& s = spheres[index];
-    out.t = t;
-    s.surface(ray, ShapeHit{t, Vec3(0.0f)}, out);
-    out.material = s.material;
-    out.shape = shape_index;
-    out.primitive = index;
-}
+// Representations that report the sphere's index as Embree's primitive id share rayo's
+// re-projected sphere surface.
+class SphereIndexBinding : public GeometryBinding {
+public:
+    SphereIndexBinding(const std::vector<Sphere>& spheres, uint32_t shape_index)
+        : m_spheres(spheres), m_shape_index(shape_index) {}
+    RTCGeometry geometry() const override { return m_geometry; }
+    size_t primitive_count() const override { return m_spheres.size(); }
+    void surface(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& out) const override {
+        const float t = rayhit.ray.tfar;
+        const Sphere& s = m_spheres[rayhit.hit.primID];
+        out.t = t;
+        s.surface(ray, ShapeHit{t, Vec3(0.0f)}, out);
+        out.material = s.material;
+        out.shape = m_shape_index;
+        out.primitive = rayhit.hit.primID;
+    }
+    void parameterize(SurfaceHit& hit) const override {
+        m_spheres[hit.primitive].parameterization(hit.position, hit);
+    }
+
+protected:
+    const std::vector<Sphere>& m_spheres;
+    uint32_t m_shape_index;
+    RTCGeometry m_geometry = nullptr;
+};
 
 // Embree's RTC_GEOMETRY_TYPE_SPHERE_POINT: its own kernel, rayo's re-projected surface.
-class PointSphereBinding : public GeometryBinding {
-  public:
+class PointSphereBinding : public SphereIndexBinding {
+public:
     PointSphereBinding(const std::vector<Sphere>& spheres, uint32_t shape_index)
-        : m_spheres(spheres), m_shape_index(shape_index) {
+        : SphereIndexBinding(spheres, shape_index) {
         m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_SPHERE_POINT);
         auto* points = static_cast<float*>(
             rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
@@ -44,19 +60,6 @@ class PointSphereBinding : public GeometryBinding {
             points[4 * i + 3] = spheres[i].radius;
         }
     }
-    RTCGeometry geometry() const override { return m_geometry; }
-    size_t primitive_count() const override { return m_spheres.size(); }
-    void surface(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& out) const override {
-        sphere_surface(m_spheres, m_shape_index, ray, rayhit.ray.tfar, rayhit.hit.primID, out);
-    }
-    void parameterize(SurfaceHit& hit) const override {
-        m_spheres[hit.primitive].parameterization(hit.position, hit);
-    }
-
-  private:
-    const std::vector<Sphere>& m_spheres;
-    uint32_t m_shape_index;
-    RTCGeometry m_geometry = nullptr;
 };
 
 // Each sphere tessellated into an icosphere of Embree triangles. The tessellation is the
@@ -134,117 +137,59 @@ class IcosphereBinding : public GeometryBinding {
     RTCGeometry m_geometry = nullptr;
 };
 
-// Brute force, the reference: one user primitive bounding every sphere, whose callback tests
-// them all in order (nearest first, as the window shrinks) and reports the sphere's index.
-struct BruteForceData {
-    const std::vector<Sphere>* spheres;
-    SphereMath math;
-    Bounds3 bounds;
+// Brute force, the reference: every sphere as a part of one aggregate primitive whose bounds
+// hold them all, traced by the generic callbacks; nearest() tests every sphere in order (the
+// window shrinking to the nearest so far) and reports the sphere as the hit's part.
+struct AllSpheres {
+    const std::vector<Sphere>* spheres = nullptr;
+    SphereMath math = SphereMath::Stable;
+    Bounds3 box;
+
+    Bounds3 bounds() const { return box; }
+    bool nearest(const Vec3& origin, const Vec3& direction, float tnear, float tfar,
+                 ShapeHit& hit) const {
+        bool found = false;
+        const auto count = static_cast<uint32_t>(spheres->size());
+        for (uint32_t i = 0; i < count; ++i) {
+            const Sphere& s = (*spheres)[i];
+            float t;
+            bool far_root;
+            if (intersect_sphere(math, origin, direction, s.center, s.radius, tnear, tfar, t,
+                                 far_root)) {
+                tfar = t;
+                hit.t = t;
+                hit.part = i;
+                found = true;
+            }
+        }
+        return found;
+    }
 };
 
-bool nearest_of_all(const BruteForceData& data, const Vec3& origin, const Vec3& direction,
-                    float tnear, float tfar, float& t, uint32_t& index) {
-    bool found = false;
-    const auto count = static_cast<uint32_t>(data.spheres->size());
-    for (uint32_t i = 0; i < count; ++i) {
-        const Sphere& s = (*data.spheres)[i];
-        float candidate;
-        bool far_root;
-        if (intersect_sphere(data.math, origin, direction, s.center, s.radius, tnear, tfar,
-                             candidate, far_root)) {
-            tfar = candidate;
-            t = candidate;
-            index = i;
-            found = true;
-        }
-    }
-    return found;
-}
-
-void brute_force_bounds(const RTCBoundsFunctionArguments* args) {
-    const auto* data = static_cast<const BruteForceData*>(args->geometryUserPtr);
-    RTCBounds* out = args->bounds_o;
-    out->lower_x = data->bounds.lower.x;
-    out->lower_y = data->bounds.lower.y;
-    out->lower_z = data->bounds.lower.z;
-    out->upper_x = data->bounds.upper.x;
-    out->upper_y = data->bounds.upper.y;
-    out->upper_z = data->bounds.upper.z;
-}
-
-void brute_force_intersect(const RTCIntersectFunctionNArguments* args) {
-    const auto* data = static_cast<const BruteForceData*>(args->geometryUserPtr);
-    RTCRayN* ray = RTCRayHitN_RayN(args->rayhit, args->N);
-    RTCHitN* hit = RTCRayHitN_HitN(args->rayhit, args->N);
-    const unsigned n = args->N;
-    for (unsigned i = 0; i < n; ++i) {
-        if (args->valid[i] == 0) continue;
-        Vec3 origin, direction;
-        read_ray_lane(ray, n, i, origin, direction);
-        float t;
-        uint32_t index;
-        if (!nearest_of_all(*data, origin, direction, RTCRayN_tnear(ray, n, i),
-                            RTCRayN_tfar(ray, n, i), t, index)) {
-            continue;
-        }
-        RTCRayN_tfar(ray, n, i) = t;
-        RTCHitN_u(hit, n, i) = 0.0f;
-        RTCHitN_v(hit, n, i) = 0.0f;
-        RTCHitN_primID(hit, n, i) = index;
-        RTCHitN_geomID(hit, n, i) = args->geomID;
-        RTCHitN_instID(hit, n, i, 0) = args->context->instID[0];
-    }
-}
-
-void brute_force_occluded(const RTCOccludedFunctionNArguments* args) {
-    const auto* data = static_cast<const BruteForceData*>(args->geometryUserPtr);
-    const unsigned n = args->N;
-    for (unsigned i = 0; i < n; ++i) {
-        if (args->valid[i] == 0) continue;
-        Vec3 origin, direction;
-        read_ray_lane(args->ray, n, i, origin, direction);
-        float t;
-        uint32_t index;
-        if (nearest_of_all(*data, origin, direction, RTCRayN_tnear(args->ray, n, i),
-                           RTCRayN_tfar(args->ray, n, i), t, index)) {
-            RTCRayN_tfar(args->ray, n, i) = -std::numeric_limits<float>::infinity();
-        }
-    }
-}
-
-class BruteForceBinding : public GeometryBinding {
-  public:
+class BruteForceBinding : public SphereIndexBinding {
+public:
     BruteForceBinding(const std::vector<Sphere>& spheres, uint32_t shape_index, SphereMath math)
-        : m_spheres(spheres), m_shape_index(shape_index) {
-        m_data.spheres = &spheres;
-        m_data.math = math;
-        m_data.bounds = spheres.front().bounds();
+        : SphereIndexBinding(spheres, shape_index) {
+        m_all.spheres = &spheres;
+        m_all.math = math;
+        m_all.box = spheres.front().bounds();
         for (const Sphere& s : spheres) {
             const Bounds3 b = s.bounds();
-            m_data.bounds.lower = glm::min(m_data.bounds.lower, b.lower);
-            m_data.bounds.upper = glm::max(m_data.bounds.upper, b.upper);
+            m_all.box.lower = glm::min(m_all.box.lower, b.lower);
+            m_all.box.upper = glm::max(m_all.box.upper, b.upper);
         }
+        m_data.shapes = m_data.intersectors = &m_all;
         m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
         rtcSetGeometryUserPrimitiveCount(m_geometry, 1);
         rtcSetGeometryUserData(m_geometry, &m_data);
-        rtcSetGeometryBoundsFunction(m_geometry, brute_force_bounds, nullptr);
-        rtcSetGeometryIntersectFunction(m_geometry, brute_force_intersect);
-        rtcSetGeometryOccludedFunction(m_geometry, brute_force_occluded);
-    }
-    RTCGeometry geometry() const override { return m_geometry; }
-    size_t primitive_count() const override { return m_spheres.size(); }
-    void surface(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& out) const override {
-        sphere_surface(m_spheres, m_shape_index, ray, rayhit.ray.tfar, rayhit.hit.primID, out);
-    }
-    void parameterize(SurfaceHit& hit) const override {
-        m_spheres[hit.primitive].parameterization(hit.position, hit);
+        rtcSetGeometryBoundsFunction(m_geometry, user_bounds<AllSpheres>, nullptr);
+        rtcSetGeometryIntersectFunction(m_geometry, user_intersect<AllSpheres>);
+        rtcSetGeometryOccludedFunction(m_geometry, user_occluded<AllSpheres>);
     }
 
-  private:
-    const std::vector<Sphere>& m_spheres;
-    uint32_t m_shape_index;
-    BruteForceData m_data{};
-    RTCGeometry m_geometry = nullptr;
+private:
+    AllSpheres m_all;
+    UserGeometryData<AllSpheres> m_data;
 };
 
 }  // namespace
