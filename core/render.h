@@ -18,7 +18,9 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/math.h"
 #include "core/progress.h"
+#include "core/ray.h"
 #include "core/sampling.h"
 #include "core/stats.h"
 #include "core/tile_grid.h"

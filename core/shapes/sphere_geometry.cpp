@@ -20,7 +20,7 @@ struct SphereNearest {
 // Representations that report the sphere's index as Embree's primitive id share rayo's
 // re-projected sphere surface.
 class SphereIndexBinding : public GeometryBinding {
-public:
+  public:
     SphereIndexBinding(const std::vector<Sphere>& spheres, uint32_t shape_index)
         : m_spheres(spheres), m_shape_index(shape_index) {}
     RTCGeometry geometry() const override { return m_geometry; }
@@ -38,7 +38,7 @@ public:
         m_spheres[hit.primitive].parameterization(hit.position, hit);
     }
 
-protected:
+  protected:
     const std::vector<Sphere>& m_spheres;
     uint32_t m_shape_index;
     RTCGeometry m_geometry = nullptr;
@@ -46,7 +46,7 @@ protected:
 
 // Embree's RTC_GEOMETRY_TYPE_SPHERE_POINT: its own kernel, rayo's re-projected surface.
 class PointSphereBinding : public SphereIndexBinding {
-public:
+  public:
     PointSphereBinding(const std::vector<Sphere>& spheres, uint32_t shape_index)
         : SphereIndexBinding(spheres, shape_index) {
         m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_SPHERE_POINT);
@@ -167,7 +167,7 @@ struct AllSpheres {
 };
 
 class BruteForceBinding : public SphereIndexBinding {
-public:
+  public:
     BruteForceBinding(const std::vector<Sphere>& spheres, uint32_t shape_index, SphereMath math)
         : SphereIndexBinding(spheres, shape_index) {
         m_all.spheres = &spheres;
@@ -187,7 +187,7 @@ public:
         rtcSetGeometryOccludedFunction(m_geometry, user_occluded<AllSpheres>);
     }
 
-private:
+  private:
     AllSpheres m_all;
     UserGeometryData<AllSpheres> m_data;
 };
