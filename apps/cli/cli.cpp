@@ -21,6 +21,7 @@
 #include "bench/lab/accuracy_bench.h"
 #include "core/error.h"
 #include "core/image/image_output.h"
+#include "core/path_util.h"
 #include "core/progress.h"
 #include "shading/texture.h"
 
@@ -326,6 +327,10 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
     const double parse_s = seconds_since(start);
     if (!args.quiet) {
         for (const std::string& w : d.warnings) err << "rayo: warning: " << w << "\n";
+        if (args.load_options.nff.light_intensity &&
+            (!args.scene_path || lower_extension(*args.scene_path) != ".nff")) {
+            err << "rayo: warning: --nff-light-intensity applies to NFF scenes only; ignored\n";
+        }
     }
     apply_overrides(args, d);
     const std::string output = args.output ? *args.output : default_output_path(args);

@@ -52,6 +52,17 @@ TEST_F(NffLightCliTest, DefaultIsOneOverSqrtNAndTheFlagReplacesIt) {
     }
 }
 
+TEST_F(NffLightCliTest, OtherScenesSayTheFlagDoesNothing) {
+    const CommandResult r = run("render -o out.png --nff-light-intensity 1");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: --nff-light-intensity applies to NFF scenes only; ignored"),
+              std::string::npos)
+        << r.output;
+    write("four.nff", kFourLights);
+    const CommandResult nff = run("render four.nff -o out.exr --nff-light-intensity 1");
+    EXPECT_EQ(nff.output.find("applies to NFF scenes only"), std::string::npos) << nff.output;
+}
+
 TEST_F(NffLightCliTest, BadValuesAreRefusedNamingTheFlag) {
     write("four.nff", kFourLights);
     const std::string expected = "--nff-light-intensity: expected a number in [0, ";
