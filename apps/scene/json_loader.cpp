@@ -23,6 +23,11 @@ using Json = nlohmann::json;
 
 constexpr int kFormatVersion = 1;
 
+// Deepest nesting of arrays and objects a scene file may have (docs/limits.md): far above any
+// real scene (the deepest rayo format path is about 6 levels), and far below what would exhaust
+// the stack of anything that walks the tree recursively.
+constexpr int kMaxJsonDepth = 256;
+
 // ---- JSON syntax errors -> "file:line:column" ---------------------------------------------
 
 // nlohmann's DOM builder, remembering where parsing failed: its exceptions carry a byte offset
@@ -48,12 +53,38 @@ class PositionRecordingSax : public nlohmann::detail::json_sax_dom_parser<Json> 
         return false;
     }
 
+    // Nesting depth is counted as the tree is built; parsing stops at the first array or object
+    // beyond kMaxJsonDepth (its place is found afterwards: SAX events carry no position).
+    bool start_object(std::size_t elements) {
+        return enter() && nlohmann::detail::json_sax_dom_parser<Json>::start_object(elements);
+    }
+    bool end_object() {
+        --m_depth;
+        return nlohmann::detail::json_sax_dom_parser<Json>::end_object();
+    }
+    bool start_array(std::size_t elements) {
+        return enter() && nlohmann::detail::json_sax_dom_parser<Json>::start_array(elements);
+    }
+    bool end_array() {
+        --m_depth;
+        return nlohmann::detail::json_sax_dom_parser<Json>::end_array();
+    }
+    bool too_deep() const { return m_too_deep; }
+
     bool failed() const { return m_failed; }
     std::size_t position() const { return m_position; }
     bool overflow() const { return m_overflow; }
     const std::string& message() const { return m_message; }
 
   private:
+    bool enter() {
+        if (++m_depth <= kMaxJsonDepth) return true;
+        m_too_deep = m_failed = true;
+        return false;
+    }
+
+    int m_depth = 0;
+    bool m_too_deep = false;
     bool m_failed = false;
     bool m_overflow = false;
     std::size_t m_position = 0;
@@ -75,6 +106,35 @@ std::string syntax_message(const std::string& what) {
     return message;
 }
 
+// Byte offset of the first '[' or '{' nested deeper than `limit`, outside strings and comments
+// (the parse stopped there, so the text before it is valid JSON up to that point).
+size_t first_too_deep_bracket(const std::string& text, int limit) {
+    int depth = 0;
+    bool in_string = false;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (in_string) {
+            if (c == '\\') {
+                ++i;
+            } else if (c == '"') {
+                in_string = false;
+            }
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '/' && i + 1 < text.size() && (text[i + 1] == '/' || text[i + 1] == '*')) {
+            const bool line_comment = text[i + 1] == '/';
+            const size_t end = text.find(line_comment ? "\n" : "*/", i + 2);
+            if (end == std::string::npos) break;
+            i = line_comment ? end : end + 1;
+        } else if (c == '[' || c == '{') {
+            if (++depth > limit) return i;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return text.size();
+}
+
 Json parse_text(const std::string& text, const std::string& source_name) {
     Json root;
     PositionRecordingSax sax(root);
@@ -82,7 +142,9 @@ Json parse_text(const std::string& text, const std::string& source_name) {
                                     /*strict=*/true, /*ignore_comments=*/true);
     if (ok && !sax.failed()) return root;
     // 1-based line and column of the byte at the recorded (1-based) position.
-    const size_t offset = std::min(sax.position() > 0 ? sax.position() - 1 : 0, text.size());
+    const size_t offset = sax.too_deep()
+                              ? first_too_deep_bracket(text, kMaxJsonDepth)
+                              : std::min(sax.position() > 0 ? sax.position() - 1 : 0, text.size());
     size_t line = 1, line_start = 0;
     for (size_t i = 0; i < offset; ++i) {
         if (text[i] == '\n') {
@@ -91,7 +153,9 @@ Json parse_text(const std::string& text, const std::string& source_name) {
         }
     }
     const size_t column = offset - line_start + 1;
-    std::string message = syntax_message(sax.message());
+    std::string message = sax.too_deep() ? "arrays and objects nested deeper than " +
+                                               std::to_string(kMaxJsonDepth) + " levels"
+                                         : syntax_message(sax.message());
     if (sax.overflow()) message += " (expected a finite number that fits a double)";
     throw InputError(source_name + ":" + std::to_string(line) + ":" + std::to_string(column),
                      "invalid JSON: " + message);
@@ -119,11 +183,12 @@ std::string child(const std::string& pointer, size_t index) {
 
 // A short rendering of a value for "got ..." in messages.
 std::string describe(const Json& value) {
+    // Containers are described, never dumped: dump() recurses through the whole value.
+    if (value.is_object()) return "an object";
+    if (value.is_array()) return "an array of " + std::to_string(value.size());
     std::string text = value.dump();
     if (text.size() > 40) text = text.substr(0, 37) + "...";
     if (value.is_string()) return "the string " + text;
-    if (value.is_object()) return "an object";
-    if (value.is_array()) return "an array of " + std::to_string(value.size());
     return text;
 }
 

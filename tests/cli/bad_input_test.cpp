@@ -228,6 +228,37 @@ TEST_F(BadInputJson, NanInfiniteAndAbsurdMagnitudes) {
         });
 }
 
+// Nesting beyond 256 levels is refused at the first bracket too deep, whatever the depth: at
+// 100,000 levels nlohmann's recursive dump() (once used to quote the value) overflowed the stack.
+TEST_F(BadInputJson, NestingDeeperThanTheLimit) {
+    auto nested = [](const std::string& open, const std::string& close, int depth) {
+        std::string text;
+        for (int i = 0; i < depth; ++i) text += open;
+        for (int i = 0; i < depth; ++i) text += close;
+        return text;
+    };
+    const std::string deep_objects = "{\"rayo\": 1, \"objects\": " + nested("[", "]", 100000) + "}";
+    const std::string top_level = nested("[", "]", 100000);
+    const std::string comment_then_deep =
+        "// [[[[ a comment\n{\"a\": " + nested("[", "]", 300) + "}";
+    expect_cases_refused(
+        "bad.json",
+        {
+            // The first "[" (column 24) is level 2, so level 257 is the 256th "[": column 279.
+            {"100,000 levels under objects", deep_objects, "bad.json:1:279",
+             "nested deeper than 256 levels"},
+            {"100,000 levels at the top", top_level, "bad.json:1:257",
+             "nested deeper than 256 levels"},
+            {"brackets in a comment do not count", comment_then_deep, "bad.json:2:262",
+             "nested deeper than 256 levels"},
+        });
+    // 256 levels are JSON the parser takes (the scene is then refused for its content instead).
+    write("ok_depth.json", "{\"rayo\": 1, \"x\": " + nested("[", "]", 255) + "}");
+    const CommandResult r = run("render ok_depth.json -o out.png");
+    EXPECT_EQ(r.output.find("nested deeper"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("unknown key \"x\""), std::string::npos) << r.output;
+}
+
 TEST_F(BadInputJson, DegenerateCameras) {
     expect_cases_refused(
         "bad.json",
