@@ -334,6 +334,7 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
     }
     apply_overrides(args, d);
     const std::string output = args.output ? *args.output : default_output_path(args);
+    check_output(output, args.output_options);  // before the render, not after it
 
     const bool progress = !args.quiet && ProgressReporter::stderr_is_terminal();
     const RenderResult result = render_scene(d, args.threads.value_or(0), progress);

@@ -5,6 +5,7 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 #include <OpenImageIO/imageio.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -158,13 +159,23 @@ std::vector<T> quantise(const std::vector<float>& rgba, int channels) {
     return out;
 }
 
+// The longest file name the directory's file system takes (NAME_MAX, 255 on Linux file systems).
+size_t max_name_length(const std::string& dir) {
+    const long limit = ::pathconf(dir.c_str(), _PC_NAME_MAX);
+    return limit > 0 ? static_cast<size_t>(limit) : 255;
+}
+
 std::string temporary_path_for(const std::string& path) {
     const size_t slash = path.find_last_of('/');
     const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
-    const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-    // Keep the real extension last so that OpenImageIO picks the same format.
-    return dir + "." + name + ".tmp" + std::to_string(static_cast<long>(::getpid())) +
-           lower_extension(path);
+    std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+    // "." + name + ".tmpPID" + the real extension (last, so that OpenImageIO picks the same
+    // format); the name is shortened so that the temporary fits where the final name fits.
+    const std::string suffix =
+        ".tmp" + std::to_string(static_cast<long>(::getpid())) + lower_extension(path);
+    const size_t limit = max_name_length(dir.empty() ? "." : dir);
+    if (1 + name.size() + suffix.size() > limit) name.resize(limit - 1 - suffix.size());
+    return dir + "." + name + suffix;
 }
 
 // Writes `pixels` (already in `type`) with `spec` to a temporary file, then renames it onto
@@ -210,6 +221,38 @@ void add_metadata(OIIO::ImageSpec& spec, const OutputOptions& options) {
 }
 
 }  // namespace
+
+void check_output(const std::string& path, const OutputOptions& options) {
+    const Format format = format_of(path);
+    if (format != Format::Exr) {
+        std::string display = options.display, view = options.view;
+        resolve_display_view(load_config(), path, display, view);
+    }
+    const std::string dir = parent_directory(path);
+    struct stat info {};
+    if (::stat(dir.c_str(), &info) != 0) {
+        throw InputError(path, "cannot write: the directory '" + dir + "' does not exist (" +
+                                   std::strerror(errno) + ")");
+    }
+    if (!S_ISDIR(info.st_mode)) {
+        throw InputError(path, "cannot write: '" + dir + "' is not a directory");
+    }
+    if (::access(dir.c_str(), W_OK) != 0) {
+        throw InputError(path, "cannot write: the directory '" + dir + "' is not writable (" +
+                                   std::strerror(errno) + ")");
+    }
+    if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) {
+        throw InputError(path, "cannot write: it is a directory");
+    }
+    const size_t slash = path.find_last_of('/');
+    const size_t name_length = slash == std::string::npos ? path.size() : path.size() - slash - 1;
+    const size_t limit = max_name_length(dir);
+    if (name_length > limit) {
+        throw InputError(path, "cannot write: the file name is " + std::to_string(name_length) +
+                                   " bytes; the file system allows at most " +
+                                   std::to_string(limit));
+    }
+}
 
 std::string ocio_config_path() {
     const char* env = std::getenv("OCIO");

@@ -25,6 +25,13 @@ struct OutputOptions {
 // The OCIO config rayo uses: $OCIO when set, else the shipped config (installed or source tree).
 std::string ocio_config_path();
 
+// Everything about writing `path` that does not need the pixels, checked before a render so
+// that a typo in the output name does not throw the render away: a known extension, the
+// display/view (display formats), a directory that exists, is a directory and is writable, a
+// path that is not a directory, and a file name the file system takes (the temporary name is
+// shortened to fit). Throws InputError naming the path and the reason.
+void check_output(const std::string& path, const OutputOptions& options);
+
 // Throws InputError (where = the path) for an unknown extension, an unknown display/view or an
 // unwritable location; the final file exists only when the call succeeds.
 void write_image(const Film& film, const std::string& path, const OutputOptions& options);

@@ -5,6 +5,7 @@
 // json_loader_test.cpp, mesh_loader_test.cpp) check the messages in detail; cli_test.cpp covers
 // the flags and NFF cameras; this file covers each kind of bad input for each format at the CLI.
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -423,6 +424,43 @@ TEST_F(BadInputCli, UnwritableOutputs) {
     write("scene.json", "{\"rayo\": 1}");
     expect_refused("render scene.json -o no/such/dir/x.exr", "no/such/dir/x.exr", "cannot write",
                    "json scene, missing folder");
+}
+
+// Output problems are found before the render, not after it: a render that would take minutes
+// (4096², 4096 samples per pixel of the built-in scene) is refused at once, with nothing written.
+TEST_F(BadInputCli, OutputProblemsAreFoundBeforeRendering) {
+    fs::create_directories(m_dir / "folder.png");
+    const std::string long_name(300, 'n');
+    struct Case {
+        std::string output, extra, place, expected;
+    };
+    const Case cases[] = {
+        {"x.bmpx", "", "x.bmpx", "unsupported image extension '.bmpx'"},
+        {"no/such/dir/x.exr", "", "no/such/dir/x.exr",
+         "the directory 'no/such/dir' does not exist"},
+        {"folder.png", "", "folder.png", "cannot write: it is a directory"},
+        {"x.png", "--view Nope", "x.png", "unknown OCIO view 'Nope'"},
+        {long_name + ".png", "", long_name + ".png",
+         "the file name is 304 bytes; the file system allows at most 255"},
+    };
+    for (const Case& c : cases) {
+        const auto start = std::chrono::steady_clock::now();
+        expect_refused(
+            "render --width 4096 --height 4096 --spp 4096 --quiet -o " + c.output + " " + c.extra,
+            c.place, c.expected, c.output);
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        EXPECT_LT(seconds, 30.0) << c.output << ": the render ran before the output was checked";
+    }
+}
+
+// A legal name of 250 bytes is written, although ".NAME.tmpPID.png" would not fit in 255: the
+// temporary name is shortened instead.
+TEST_F(BadInputCli, LongLegalOutputNamesAreWritten) {
+    const std::string name = std::string(246, 'n') + ".png";
+    const CommandResult r = run("render --width 16 --height 12 --quiet -o " + name);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(listing(), std::set<std::string>{name});
 }
 
 TEST_F(BadInputCli, FlagValuesCliTestDoesNotCover) {
