@@ -1,6 +1,6 @@
-// Time of triangulate_polygon (core/polygon_triangulation.h) on concave outlines of growing size:
-// gears like the SPD's (4 vertices per tooth, half of them reflex) and combs (teeth on a bar),
-// and on a convex polygon (the fan). Ear clipping costs O(N·R) for N vertices, R reflex.
+// Time of triangulate_polygon (core/shapes/polygon_triangulation.h) on concave outlines of growing
+// size: gears like the SPD's (4 vertices per tooth, half of them reflex) and combs (teeth on a
+// bar), and on a convex polygon (the fan). Ear clipping costs O(N·R) for N vertices, R reflex.
 #include <benchmark/benchmark.h>
 
 #include <cmath>

@@ -14,7 +14,7 @@ enum class SphereMethod {
     User,         // Embree user geometry running our quadratic (the design card's path)
     EmbreePoint,  // Embree's built-in RTC_GEOMETRY_TYPE_SPHERE_POINT
     Mesh,         // each sphere tessellated into an icosphere of Embree triangles
-    Auto,         // chosen per scene (apps/sphere_method_choice.h); never reaches Accel
+    Auto,         // chosen per scene (apps/scene/sphere_method_choice.h); never reaches Accel
 };
 
 struct SphereRepresentation {

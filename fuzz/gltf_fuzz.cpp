@@ -1,6 +1,6 @@
-// libFuzzer target for the glTF import path (apps/mesh_loader.cpp load_gltf, tinygltf): inputs
-// that start with the binary magic "glTF" are written as .glb, others as .gltf, next to tri.bin
-// (fuzz/fuzz_files.h) for external-buffer references. An accepted mesh must pass the mesh
+// libFuzzer target for the glTF import path (apps/scene/mesh_loader.cpp load_gltf, tinygltf):
+// inputs that start with the binary magic "glTF" are written as .glb, others as .gltf, next to
+// tri.bin (fuzz/fuzz_files.h) for external-buffer references. An accepted mesh must pass the mesh
 // invariants; a refusal must be rayo::InputError.
 #include <cstddef>
 #include <cstdint>

@@ -1,5 +1,5 @@
-// libFuzzer target for the JSON scene reader (apps/json_loader.cpp), mesh references included:
-// relative mesh paths resolve in the scratch folder that holds tri.obj / tri.gltf
+// libFuzzer target for the JSON scene reader (apps/scene/json_loader.cpp), mesh references
+// included: relative mesh paths resolve in the scratch folder that holds tri.obj / tri.gltf
 // (fuzz/fuzz_files.h). Loaded scenes must pass fuzz/scene_invariants.h; refusals must be
 // rayo::InputError (any other exception escapes and aborts: a finding).
 #include <cstddef>

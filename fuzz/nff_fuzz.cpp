@@ -1,5 +1,5 @@
-// libFuzzer target for the NFF reader (apps/nff_loader.cpp): any bytes must either load into a
-// scene that passes fuzz/scene_invariants.h or be refused with rayo::InputError. Any other
+// libFuzzer target for the NFF reader (apps/scene/nff_loader.cpp): any bytes must either load into
+// a scene that passes fuzz/scene_invariants.h or be refused with rayo::InputError. Any other
 // exception escapes and aborts, which libFuzzer reports as a finding.
 #include <cstddef>
 #include <cstdint>

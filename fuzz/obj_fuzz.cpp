@@ -1,5 +1,5 @@
-// libFuzzer target for the OBJ import path (apps/mesh_loader.cpp load_obj, tinyobjloader): the
-// input is written as an .obj next to tri.mtl (fuzz/fuzz_files.h), loaded, and then put through
+// libFuzzer target for the OBJ import path (apps/scene/mesh_loader.cpp load_obj, tinyobjloader):
+// the input is written as an .obj next to tri.mtl (fuzz/fuzz_files.h), loaded, and then put through
 // what the JSON loader does with a mesh (transform, degenerate-triangle removal, normals).
 // An accepted mesh must pass the mesh invariants; a refusal must be rayo::InputError.
 #include <cstddef>

@@ -1,4 +1,4 @@
-// Tests of the NFF open cone/cylinder intersection (core/cone.h): analytic hit distances and
+// Tests of the NFF open cone/cylinder intersection (core/shapes/cone.h): analytic hit distances and
 // normals for cylinders and cones, no caps, the axial segment limits, and rays from inside.
 #include "core/shapes/cone.h"
 

@@ -1,4 +1,4 @@
-// Tests of TriangleMesh::add_convex_polygon (core/mesh.h): fan triangulation of NFF convex
+// Tests of TriangleMesh::add_convex_polygon (core/shapes/mesh.h): fan triangulation of NFF convex
 // polygons, refusal of degenerate polygons, and vertex normals kept aligned with positions.
 #include "core/shapes/mesh.h"
 

@@ -1,6 +1,7 @@
-// Tests of the polygon triangulation (core/polygon_triangulation.h) and TriangleMesh::add_polygon:
-// concave outlines (L, star, comb, a gear like the SPD's) covered exactly once by triangles that
-// keep the polygon's winding; convex polygons unchanged from the fan rayo always made.
+// Tests of the polygon triangulation (core/shapes/polygon_triangulation.h) and
+// TriangleMesh::add_polygon: concave outlines (L, star, comb, a gear like the SPD's) covered
+// exactly once by triangles that keep the polygon's winding; convex polygons unchanged from the fan
+// rayo always made.
 #include "core/shapes/polygon_triangulation.h"
 
 #include <gtest/gtest.h>

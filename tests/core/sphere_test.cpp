@@ -1,4 +1,4 @@
-// Tests of ray/sphere intersection (core/sphere.h, seed 000 eqs. [3]-[9]): the seed's worked
+// Tests of ray/sphere intersection (core/shapes/sphere.h, seed 000 eqs. [3]-[9]): the seed's worked
 // examples in both SphereMath forms and both precisions, tangent/miss cases, the (tnear, tfar)
 // window, and the accuracy of the stable form against the seed form far from the sphere.
 #include "core/shapes/sphere.h"

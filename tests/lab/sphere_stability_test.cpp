@@ -1,6 +1,6 @@
-// Pins what the sphere stability study (core/sphere_stability.h, docs/stability.md) finds: where
-// the default stable float form stays exact, where the seed form fails, how far double goes, the
-// spawned-ray offsets, and the breaking point that defeats every method.
+// Pins what the sphere stability study (bench/lab/sphere_stability.h, docs/stability.md) finds:
+// where the default stable float form stays exact, where the seed form fails, how far double goes,
+// the spawned-ray offsets, and the breaking point that defeats every method.
 #include "bench/lab/sphere_stability.h"
 
 #include <gtest/gtest.h>

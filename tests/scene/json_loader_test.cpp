@@ -1,4 +1,4 @@
-// Tests of the native JSON scene reader (apps/json_loader.h): every field parsed to its exact
+// Tests of the native JSON scene reader (apps/scene/json_loader.h): every field parsed to its exact
 // value, the documented defaults, each error with its JSON pointer, comments, and the examples.
 #include "apps/scene/json_loader.h"
 

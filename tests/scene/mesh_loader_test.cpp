@@ -1,5 +1,5 @@
-// Tests of mesh import (apps/mesh_loader.h): OBJ with MTL materials mapped onto Phong, glTF as
-// base64-embedded .gltf, external .bin and .glb (written by the tests), node transforms, index
+// Tests of mesh import (apps/scene/mesh_loader.h): OBJ with MTL materials mapped onto Phong, glTF
+// as base64-embedded .gltf, external .bin and .glb (written by the tests), node transforms, index
 // types, degenerate triangles, and the errors for missing and malformed files.
 #include "apps/scene/mesh_loader.h"
 

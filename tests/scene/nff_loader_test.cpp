@@ -1,4 +1,4 @@
-// Tests of the NFF reader (apps/nff_loader.h): entity mapping per the reference reader's
+// Tests of the NFF reader (apps/scene/nff_loader.h): entity mapping per the reference reader's
 // conventions (docs/nff.md), geometry values, and every error with its line.
 #include "apps/scene/nff_loader.h"
 
