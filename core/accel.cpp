@@ -49,7 +49,7 @@ Accel::Accel(const Scene& scene, const AccelOptions& options) : m_options(option
     rtcSetSceneBuildQuality(m_rtc_scene, RTC_BUILD_QUALITY_HIGH);
     // Every registered shape type, in registry order; make_binding picks its representation.
     scene.shapes.for_each([&](const auto& shapes) {
-        using S = typename std::decay_t<decltype(shapes)>::value_type;
+        using S = ShapeOf<decltype(shapes)>;
         if (!shapes.empty()) attach(make_binding(shapes, Shapes::index_of<S>(), options));
     });
     for (size_t m = 0; m < scene.meshes.size(); ++m) {

@@ -3,7 +3,6 @@
 // core/shapes/registry.h) and triangle meshes, with material ids. Materials and lights live in
 // shading/ (core knows nothing of shading); the loaders fill both.
 #include <string>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -31,7 +30,7 @@ struct Scene {
     std::vector<std::pair<std::string, size_t>> shape_counts() const {
         std::vector<std::pair<std::string, size_t>> counts;
         shapes.for_each([&](const auto& v) {
-            const std::string name = std::decay_t<decltype(v)>::value_type::kName;
+            const std::string name = ShapeOf<decltype(v)>::kName;
             counts.emplace_back(name + (name.back() == 'x' ? "es" : "s"), v.size());
         });
         return counts;

@@ -95,30 +95,14 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
     }
 }
 
-// Any Shape S as Embree user geometry: one primitive per shape, the generic callbacks above,
-// the hit surface from S::surface.
-template <typename S, typename Call = CallNearest>
-class ShapeBinding : public GeometryBinding {
+// The surfaces of hits on shapes of type S whose Embree primitive id is the shape's index: the
+// base of every binding of a Shape type (user geometry here; Embree's own point spheres and the
+// brute-force aggregate in core/shapes/sphere_geometry.cpp). Derived classes create m_geometry.
+template <typename S>
+class ShapeSurfaceBinding : public GeometryBinding {
   public:
-    ShapeBinding(const std::vector<S>& shapes, uint32_t shape_index)
-        : m_shapes(shapes), m_shape_index(shape_index) {
-        using Traits = ShapeTraits<S>;
-        m_data.shapes = shapes.data();
-        if constexpr (Traits::kSelfIntersecting) {
-            m_data.intersectors = shapes.data();
-        } else {
-            m_intersectors.reserve(shapes.size());
-            for (const S& s : shapes) m_intersectors.push_back(s.intersector());
-            m_data.intersectors = m_intersectors.data();
-        }
-        m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
-        rtcSetGeometryUserPrimitiveCount(m_geometry, static_cast<unsigned>(shapes.size()));
-        // Embree 3 ignores the bounds function's own pointer: the data goes here.
-        rtcSetGeometryUserData(m_geometry, &m_data);
-        rtcSetGeometryBoundsFunction(m_geometry, user_bounds<S>, nullptr);
-        rtcSetGeometryIntersectFunction(m_geometry, user_intersect<S, Call>);
-        rtcSetGeometryOccludedFunction(m_geometry, user_occluded<S, Call>);
-    }
+    ShapeSurfaceBinding(const std::vector<S>& shapes, uint32_t shape_index)
+        : m_shapes(shapes), m_shape_index(shape_index) {}
 
     RTCGeometry geometry() const override { return m_geometry; }
     size_t primitive_count() const override { return m_shapes.size(); }
@@ -137,12 +121,39 @@ class ShapeBinding : public GeometryBinding {
         m_shapes[hit.primitive].parameterization(hit.position, hit);
     }
 
-  private:
+  protected:
     const std::vector<S>& m_shapes;
     uint32_t m_shape_index;
+    RTCGeometry m_geometry = nullptr;
+};
+
+// Any Shape S as Embree user geometry: one primitive per shape, the generic callbacks above.
+template <typename S, typename Call = CallNearest>
+class ShapeBinding : public ShapeSurfaceBinding<S> {
+  public:
+    ShapeBinding(const std::vector<S>& shapes, uint32_t shape_index)
+        : ShapeSurfaceBinding<S>(shapes, shape_index) {
+        m_data.shapes = shapes.data();
+        if constexpr (ShapeTraits<S>::kSelfIntersecting) {
+            m_data.intersectors = shapes.data();
+        } else {
+            m_intersectors.reserve(shapes.size());
+            for (const S& s : shapes) m_intersectors.push_back(s.intersector());
+            m_data.intersectors = m_intersectors.data();
+        }
+        RTCGeometry geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(shapes.size()));
+        // Embree 3 ignores the bounds function's own pointer: the data goes here.
+        rtcSetGeometryUserData(geometry, &m_data);
+        rtcSetGeometryBoundsFunction(geometry, user_bounds<S>, nullptr);
+        rtcSetGeometryIntersectFunction(geometry, user_intersect<S, Call>);
+        rtcSetGeometryOccludedFunction(geometry, user_occluded<S, Call>);
+        this->m_geometry = geometry;
+    }
+
+  private:
     std::vector<typename ShapeTraits<S>::Intersector> m_intersectors;  // when S names one
     UserGeometryData<S> m_data;
-    RTCGeometry m_geometry = nullptr;
 };
 
 // The default binding of a shape type: user geometry. A shape type with other representations

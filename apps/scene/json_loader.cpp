@@ -237,9 +237,8 @@ class SceneParser {
             bool known = false;
             for (const std::string& key : allowed) known |= item.key() == key;
             if (!known) {
-                const std::vector<std::string>& names = allowed;
                 fail(child(pointer, item.key()),
-                     "unknown key \"" + item.key() + "\" (expected one of: " + join(names) + ")");
+                     "unknown key \"" + item.key() + "\" (expected one of: " + join(allowed) + ")");
             }
         }
     }
@@ -413,10 +412,14 @@ class SceneParser {
 
     template <typename S>
     void parse_shape(const Json& value, const std::string& pointer, std::vector<S>& out) const {
+        // The keys a shape of type S may have: its fields, "type" and "material" (once per type).
+        static const std::vector<std::string> keys = [] {
+            FieldNames names{{"type", "material"}};
+            S().fields(names);
+            return names.names;
+        }();
+        check_keys(value, pointer, keys);
         S shape;
-        FieldNames names{{"type", "material"}};
-        shape.fields(names);
-        check_keys(value, pointer, names.names);
         FieldReader reader{*this, value, pointer};
         shape.fields(reader);
         if (const std::optional<FieldProblem> problem = shape.problem()) {
@@ -840,17 +843,21 @@ void SceneParser::parse_object(const Json& value, const std::string& pointer, Sc
                                TriangleMesh& polygons) {
     require_object(value, pointer, "an object");
     // The registered shapes by name (core/shapes/registry.h), then the triangle-mesh kinds.
-    std::vector<std::string> types;
-    out.scene.shapes.for_each(
-        [&](auto& shapes) { types.push_back(std::decay_t<decltype(shapes)>::value_type::kName); });
-    for (const char* kind : {"triangle", "polygon", "mesh"}) types.push_back(kind);
-    std::vector<std::string> quoted;
-    for (const std::string& t : types) quoted.push_back("\"" + t + "\"");
+    static const std::vector<std::string> types = [] {
+        std::vector<std::string> names = Shapes::names();
+        for (const char* kind : {"triangle", "polygon", "mesh"}) names.push_back(kind);
+        return names;
+    }();
+    static const std::string expected_type = [] {
+        std::vector<std::string> quoted;
+        for (const std::string& t : types) quoted.push_back("\"" + t + "\"");
+        return join_or(quoted);
+    }();
     const std::string type =
-        choice(require(value, pointer, "type", join_or(quoted)), child(pointer, "type"), types);
+        choice(require(value, pointer, "type", expected_type), child(pointer, "type"), types);
     bool shape_read = false;
     out.scene.shapes.for_each([&](auto& shapes) {
-        if (type == std::decay_t<decltype(shapes)>::value_type::kName) {
+        if (type == ShapeOf<decltype(shapes)>::kName) {
             parse_shape(value, pointer, shapes);
             shape_read = true;
         }

@@ -30,7 +30,7 @@ void check_material_ids(const SceneDescription& d) {
         }
     };
     d.scene.shapes.for_each([&](const auto& shapes) {
-        using S = typename std::decay_t<decltype(shapes)>::value_type;
+        using S = ShapeOf<decltype(shapes)>;
         for (size_t i = 0; i < shapes.size(); ++i) {
             check(shapes[i].material, std::string(S::kName) + " " + std::to_string(i));
         }

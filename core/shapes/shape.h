@@ -11,8 +11,7 @@
 //   int crossings(const Vec3& o, const Vec3& d, ShapeCrossing out[kMaxShapeCrossings]) const;
 //       // every crossing of the line o + t·d (any t), sorted by t, entering or leaving
 //   bool nearest(const Vec3& o, const Vec3& d, float tnear, float tfar, ShapeHit& hit) const;
-//       // the first crossing in (tnear, tfar): the hot path (nearest_crossing() derives it
-//       // from crossings() for shapes without a faster form)
+//       // the first crossing in (tnear, tfar) and the outward normal there: the hot path
 //   void surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const;
 //       // position, unit outward geometric and shading normals, object size
 //   void parameterization(const Vec3& position, SurfaceHit& out) const;  // uv and dpdu
@@ -50,22 +49,6 @@ struct ShapeHit {
     Vec3 normal{0.0f};
     uint32_t part = 0;
 };
-
-// The first of a shape's crossings inside (tnear, tfar), for shapes whose nearest() is no faster.
-template <typename S>
-bool nearest_crossing(const S& shape, const Vec3& origin, const Vec3& direction, float tnear,
-                      float tfar, ShapeHit& hit) {
-    ShapeCrossing crossings[kMaxShapeCrossings];
-    const int count = shape.crossings(origin, direction, crossings);
-    for (int i = 0; i < count; ++i) {
-        if (crossings[i].t > tnear && crossings[i].t < tfar) {
-            hit.t = crossings[i].t;
-            hit.normal = crossings[i].entering ? -direction : direction;
-            return true;
-        }
-    }
-    return false;
-}
 
 // Which type runs the intersection of a shape S (S itself unless it names an Intersector).
 template <typename S, typename = void>

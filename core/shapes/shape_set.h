@@ -4,6 +4,7 @@
 // loaders, `rayo info`) so that none of them names a shape type.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -24,6 +25,10 @@ constexpr size_t index_in_pack() {
     }
     return sizeof...(Ts);
 }
+
+// The shape type of a vector that ShapeSet::for_each hands out: ShapeOf<decltype(shapes)>.
+template <typename Vector>
+using ShapeOf = typename std::decay_t<Vector>::value_type;
 
 template <typename List>
 class ShapeSet;
@@ -57,6 +62,9 @@ class ShapeSet<ShapeList<Shapes...>> {
     void for_each(F&& f) const {
         std::apply([&](const auto&... vectors) { (f(vectors), ...); }, m_shapes);
     }
+
+    // The scene-file names of the registered types (S::kName), in registry order.
+    static std::vector<std::string> names() { return {Shapes::kName...}; }
 
     size_t size() const {
         size_t n = 0;

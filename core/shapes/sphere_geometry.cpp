@@ -17,38 +17,11 @@ struct SphereNearest {
     }
 };
 
-// Representations that report the sphere's index as Embree's primitive id share rayo's
-// re-projected sphere surface.
-class SphereIndexBinding : public GeometryBinding {
-  public:
-    SphereIndexBinding(const std::vector<Sphere>& spheres, uint32_t shape_index)
-        : m_spheres(spheres), m_shape_index(shape_index) {}
-    RTCGeometry geometry() const override { return m_geometry; }
-    size_t primitive_count() const override { return m_spheres.size(); }
-    void surface(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& out) const override {
-        const float t = rayhit.ray.tfar;
-        const Sphere& s = m_spheres[rayhit.hit.primID];
-        out.t = t;
-        s.surface(ray, ShapeHit{t, Vec3(0.0f)}, out);
-        out.material = s.material;
-        out.shape = m_shape_index;
-        out.primitive = rayhit.hit.primID;
-    }
-    void parameterize(SurfaceHit& hit) const override {
-        m_spheres[hit.primitive].parameterization(hit.position, hit);
-    }
-
-  protected:
-    const std::vector<Sphere>& m_spheres;
-    uint32_t m_shape_index;
-    RTCGeometry m_geometry = nullptr;
-};
-
 // Embree's RTC_GEOMETRY_TYPE_SPHERE_POINT: its own kernel, rayo's re-projected surface.
-class PointSphereBinding : public SphereIndexBinding {
+class PointSphereBinding : public ShapeSurfaceBinding<Sphere> {
   public:
     PointSphereBinding(const std::vector<Sphere>& spheres, uint32_t shape_index)
-        : SphereIndexBinding(spheres, shape_index) {
+        : ShapeSurfaceBinding<Sphere>(spheres, shape_index) {
         m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_SPHERE_POINT);
         auto* points = static_cast<float*>(
             rtcSetNewGeometryBuffer(m_geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4,
@@ -166,10 +139,10 @@ struct AllSpheres {
     }
 };
 
-class BruteForceBinding : public SphereIndexBinding {
+class BruteForceBinding : public ShapeSurfaceBinding<Sphere> {
   public:
     BruteForceBinding(const std::vector<Sphere>& spheres, uint32_t shape_index, SphereMath math)
-        : SphereIndexBinding(spheres, shape_index) {
+        : ShapeSurfaceBinding<Sphere>(spheres, shape_index) {
         m_all.spheres = &spheres;
         m_all.math = math;
         m_all.box = spheres.front().bounds();

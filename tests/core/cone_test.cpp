@@ -231,5 +231,24 @@ TEST(Cone, BoundsAreTightAndContainTheSurface) {
     }
 }
 
+// The Shape interface of the open cone: crossings of the whole line, entering against the outward
+// normal, none along the axis (no caps).
+TEST(ConeShape, CrossingsOfTheWholeLine) {
+    const Cone c = unit_cylinder();
+    ShapeCrossing out[kMaxShapeCrossings];
+    ASSERT_EQ(c.crossings(Vec3(-5.0f, 1.0f, 0.0f), Vec3(1, 0, 0), out), 2);
+    EXPECT_NEAR(out[0].t, 4.0f, 1e-5f);
+    EXPECT_TRUE(out[0].entering);
+    EXPECT_NEAR(out[1].t, 6.0f, 1e-5f);
+    EXPECT_FALSE(out[1].entering);
+    // Above the segment: the infinite cylinder is crossed, the cone is not.
+    EXPECT_EQ(c.crossings(Vec3(-5.0f, 3.0f, 0.0f), Vec3(1, 0, 0), out), 0);
+    EXPECT_EQ(c.crossings(Vec3(0.0f, -5.0f, 0.0f), Vec3(0, 1, 0), out), 0);
+    // From inside, the first crossing is behind the origin.
+    ASSERT_EQ(c.crossings(Vec3(0.0f, 1.0f, 0.0f), Vec3(1, 0, 0), out), 2);
+    EXPECT_NEAR(out[0].t, -1.0f, 1e-5f);
+    EXPECT_NEAR(out[1].t, 1.0f, 1e-5f);
+}
+
 }  // namespace
 }  // namespace rayo

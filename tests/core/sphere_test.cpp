@@ -267,5 +267,37 @@ TEST(SphereAccuracy, HitsAndMissesAtDistance1e3) {
     EXPECT_LT(s.stable_max_relative_error, 1e-5);
 }
 
+// The Shape interface of the sphere: every crossing of the line, sorted, entering then leaving
+// (what CSG by intervals needs), and the spherical parameterization.
+TEST(SphereShape, CrossingsOfTheWholeLineSortedEnteringThenLeaving) {
+    const Sphere s{Vec3(0.0f), 1.0f, 0};
+    ShapeCrossing c[kMaxShapeCrossings];
+    ASSERT_EQ(s.crossings(Vec3(0, 0, -5), Vec3(0, 0, 1), c), 2);
+    EXPECT_FLOAT_EQ(c[0].t, 4.0f);
+    EXPECT_TRUE(c[0].entering);
+    EXPECT_FLOAT_EQ(c[1].t, 6.0f);
+    EXPECT_FALSE(c[1].entering);
+    // From inside: the entering crossing lies behind the origin (negative t).
+    ASSERT_EQ(s.crossings(Vec3(0, 0, 0.5f), Vec3(0, 0, 1), c), 2);
+    EXPECT_FLOAT_EQ(c[0].t, -1.5f);
+    EXPECT_FLOAT_EQ(c[1].t, 0.5f);
+    EXPECT_EQ(s.crossings(Vec3(0, 2, -5), Vec3(0, 0, 1), c), 0);
+}
+
+TEST(SphereShape, ParameterizationAtKnownPoints) {
+    const Sphere s{Vec3(1.0f, 2.0f, 3.0f), 2.0f, 0};
+    SurfaceHit hit;
+    s.parameterization(s.center + Vec3(0, 0, 2), hit);  // on +z: φ = 0, θ = π/2
+    EXPECT_NEAR(hit.uv.x, 0.5f, 1e-6f);
+    EXPECT_NEAR(hit.uv.y, 0.5f, 1e-6f);
+    EXPECT_NEAR(hit.dpdu.x, 2.0f * kPi * 2.0f, 1e-5f);  // 2π·r along +x
+    EXPECT_NEAR(glm::length(hit.dpdu - Vec3(hit.dpdu.x, 0, 0)), 0.0f, 1e-6f);
+    s.parameterization(s.center + Vec3(0, 2, 0), hit);  // the pole: v = 0
+    EXPECT_NEAR(hit.uv.y, 0.0f, 1e-6f);
+    s.parameterization(s.center + Vec3(2, 0, 0), hit);  // on +x: φ = π/2, u = 3/4
+    EXPECT_NEAR(hit.uv.x, 0.75f, 1e-6f);
+    EXPECT_NEAR(glm::dot(hit.dpdu, Vec3(1, 0, 0)), 0.0f, 1e-5f);  // tangent
+}
+
 }  // namespace
 }  // namespace rayo
