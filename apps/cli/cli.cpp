@@ -53,6 +53,8 @@ render options:
   --max-depth N            maximum reflection/refraction depth, 0..64 [scene's, default 5]
   --nff-light-intensity X  intensity of each NFF light without a colour, a number >= 0
                            [1/sqrt(number of lights), the SPD's rule; 1 gives unit lights]
+  --restrict-paths         files the scene references (meshes, material libraries, glTF
+                           buffers) must lie in the scene's folder tree (untrusted scenes)
   --tile-size N            tile side in pixels, a multiple of 16 [64]
   --sphere-method M        auto (default), user, bruteforce, embree-point, mesh:N (N 0..7:
                            20·4^N triangles per sphere)
@@ -190,6 +192,8 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
         } else if (a == "--nff-light-intensity") {
             r.load_options.nff.light_intensity =
                 static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
+        } else if (a == "--restrict-paths") {
+            r.load_options.restrict_paths = true;
         } else if (a == "--flat-spheres") {
             r.flat_spheres = true;
         } else if (a == "--single-rays") {

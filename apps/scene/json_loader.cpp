@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <initializer_list>
 #include <limits>
@@ -10,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "apps/scene/input_file.h"
 #include "apps/scene/mesh_loader.h"
 #include "core/error.h"
 #include "core/path_util.h"
@@ -211,8 +211,10 @@ enum class Bound { Any, NonNegative, Positive };
 
 class SceneParser {
   public:
-    SceneParser(std::string source, std::string base_dir)
-        : m_source(std::move(source)), m_base_dir(std::move(base_dir)) {}
+    SceneParser(std::string source, std::string base_dir, FileAccess access)
+        : m_source(std::move(source)),
+          m_base_dir(std::move(base_dir)),
+          m_access(std::move(access)) {}
 
     SceneDescription parse(const Json& root);
 
@@ -451,6 +453,7 @@ class SceneParser {
 
     std::string m_source;
     std::string m_base_dir;
+    FileAccess m_access;
     std::map<std::string, uint32_t> m_material_ids;
     std::map<std::string, int32_t> m_texture_ids;  // name -> index in ShadingScene::textures
 };
@@ -930,9 +933,8 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
     if (ext != ".obj" && ext != ".gltf" && ext != ".glb") {
         fail(file_pointer, "expected a path to an .obj, .gltf or .glb file, got " + describe(file));
     }
-    if (!std::ifstream(path, std::ios::binary)) {
-        fail(file_pointer, "mesh file not found: '" + path + "'");
-    }
+    require_input_file(path, m_source + "#" + file_pointer, "mesh file", kMaxMeshFileBytes,
+                       m_access);
     const bool overridden = find(value, "material") != nullptr;
     const uint32_t override_id = material_of(value, pointer);
     glm::dmat4 transform(1.0);
@@ -951,8 +953,8 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
     std::vector<Material>& materials = overridden ? scratch : out.shading.materials;
     const std::string where = m_source + "#" + file_pointer;
     MeshImportStats stats;
-    TriangleMesh mesh = ext == ".obj" ? load_obj(path, materials, where, &stats)
-                                      : load_gltf(path, materials, where, &stats);
+    TriangleMesh mesh = ext == ".obj" ? load_obj(path, materials, where, &stats, m_access)
+                                      : load_gltf(path, materials, where, &stats, m_access);
     if (overridden) std::fill(mesh.materials.begin(), mesh.materials.end(), override_id);
 
     transform_mesh(mesh, transform);
@@ -986,18 +988,14 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
 }  // namespace
 
 SceneDescription load_json_string(const std::string& text, const std::string& source_name,
-                                  const std::string& base_dir) {
+                                  const std::string& base_dir, const FileAccess& access) {
     const Json root = parse_text(text, source_name);
-    return SceneParser(source_name, base_dir).parse(root);
+    return SceneParser(source_name, base_dir, access).parse(root);
 }
 
-SceneDescription load_json_file(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw InputError(path, "cannot open scene file");
-    std::ostringstream text;
-    text << file.rdbuf();
-    if (file.bad()) throw InputError(path, "cannot read scene file");
-    return load_json_string(text.str(), path, parent_directory(path));
+SceneDescription load_json_file(const std::string& path, const FileAccess& access) {
+    const std::string text = read_input_file(path, path, "scene file", kMaxSceneFileBytes);
+    return load_json_string(text, path, parent_directory(path), access);
 }
 
 }  // namespace rayo

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/scene/input_file.h"
 #include "core/shapes/mesh.h"
 #include "shading/material.h"
 
@@ -23,17 +24,21 @@ struct MeshImportStats {
 // in `materials` (appended, a default-constructed Material, if there is none). The file's
 // normals are kept (unit length; zero where a corner has none, meaning "shade with the
 // geometric normal"); a file without normals gives an empty `normals` (flat shading).
+// Every file (the mesh, its .mtl libraries, glTF buffers and images) is read through
+// read_input_file (apps/scene/input_file.h): regular files of sane size that `access` allows.
 // Errors are InputError: a missing or unreadable file names `where` (the caller's place, e.g.
 // "scene.json#/objects/2/file") and the resolved path; a malformed OBJ names "path:line" when
 // tinyobjloader reports a line; a file without triangles is an error.
 TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
-                      const std::string& where, MeshImportStats* stats = nullptr);
+                      const std::string& where, MeshImportStats* stats = nullptr,
+                      const FileAccess& access = {});
 
 // glTF 2.0: POSITION, NORMAL and indices (u8/u16/u32) of the TRIANGLES primitives of every mesh
 // instanced by the default scene's nodes (node matrices and TRS applied). .glb and .gltf (base64
 // or external buffers). Other primitive modes and sparse accessors are rejected.
 TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials,
-                       const std::string& where, MeshImportStats* stats = nullptr);
+                       const std::string& where, MeshImportStats* stats = nullptr,
+                       const FileAccess& access = {});
 
 // Applies an affine transform to positions and (by the inverse transpose) normals; a transform
 // that mirrors (negative determinant) also flips the winding so faces keep their orientation.

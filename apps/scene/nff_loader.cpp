@@ -15,6 +15,7 @@
 #include <variant>
 #include <vector>
 
+#include "apps/scene/input_file.h"
 #include "core/camera.h"
 #include "core/error.h"
 #include "core/scene_limits.h"
@@ -22,9 +23,6 @@
 namespace rayo {
 namespace {
 
-// Files larger than this are refused rather than read into memory (the largest SPD databases
-// at size factor 10 are a few hundred MB).
-constexpr size_t kMaxFileBytes = size_t(1) << 31;
 // The longest NFF line has 9 tokens (`c` in its one-line form); more are counted, not kept.
 constexpr int kMaxTokens = 12;
 
@@ -595,10 +593,6 @@ class NffParser {
     }
 };
 
-struct FileCloser {
-    void operator()(std::FILE* file) const { std::fclose(file); }
-};
-
 }  // namespace
 
 SceneDescription load_nff_string(const std::string& text, const std::string& source_name,
@@ -615,28 +609,7 @@ SceneDescription load_nff_string(const std::string& text, const std::string& sou
 
 SceneDescription load_nff_file(const std::string& path, NffLoadInfo* info,
                                const NffOptions& options) {
-    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
-    if (!file) {
-        throw InputError(path, std::string("cannot open: ") + std::strerror(errno));
-    }
-    // Read at once: chunks of 1 MiB appended to one string (no per-token stream overhead).
-    std::string text;
-    std::vector<char> buffer(size_t(1) << 20);
-    for (;;) {
-        errno = 0;
-        const size_t got = std::fread(buffer.data(), 1, buffer.size(), file.get());
-        if (std::ferror(file.get())) {
-            const int error = errno;
-            throw InputError(path, std::string("cannot open: read failed: ") +
-                                       std::strerror(error != 0 ? error : EIO));
-        }
-        text.append(buffer.data(), got);
-        if (text.size() > kMaxFileBytes) {
-            throw InputError(
-                path, "cannot open: file larger than " + std::to_string(kMaxFileBytes) + " bytes");
-        }
-        if (got < buffer.size()) break;
-    }
+    const std::string text = read_input_file(path, path, "scene file", kMaxSceneFileBytes);
     return load_nff_string(text, path, info, options);
 }
 

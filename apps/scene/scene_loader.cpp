@@ -9,7 +9,10 @@ namespace rayo {
 
 SceneDescription load_scene_file(const std::string& path, const SceneLoadOptions& options) {
     const std::string extension = lower_extension(path);
-    if (extension == ".json") return load_json_file(path);
+    if (extension == ".json") {
+        return load_json_file(
+            path, options.restrict_paths ? FileAccess::confined_to_scene(path) : FileAccess());
+    }
     if (extension == ".nff") return load_nff_file(path, nullptr, options.nff);
     throw InputError(path, "unknown scene format '" + extension +
                                "': expected a .json (rayo) or .nff (Neutral File Format) file");

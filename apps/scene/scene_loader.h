@@ -11,6 +11,9 @@ namespace rayo {
 // Per-format reading choices; each applies only to files of its format.
 struct SceneLoadOptions {
     NffOptions nff;
+    // Confine every file the scene references to the scene file's directory tree
+    // (`--restrict-paths`; docs/limits.md, "Trust model").
+    bool restrict_paths = false;
 };
 
 SceneDescription load_scene_file(const std::string& path, const SceneLoadOptions& options = {});

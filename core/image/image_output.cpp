@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/image/interrupt_cleanup.h"
 #include "core/path_util.h"
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -178,35 +179,61 @@ std::string temporary_path_for(const std::string& path) {
     return dir + "." + name + suffix;
 }
 
+// OpenImageIO's message with the temporary name replaced by the final one (the name the user
+// gave), and the system's reason appended when the message lacks one.
+std::string write_failure(std::string message, int error, const std::string& tmp,
+                          const std::string& path) {
+    for (size_t at = message.find(tmp); at != std::string::npos; at = message.find(tmp, at)) {
+        message.replace(at, tmp.size(), path);
+        at += path.size();
+    }
+    if (message.empty()) message = "unknown error";
+    if (error != 0 && message.find(std::strerror(error)) == std::string::npos) {
+        message += std::string(" (") + std::strerror(error) + ")";
+    }
+    return message;
+}
+
 // Writes `pixels` (already in `type`) with `spec` to a temporary file, then renames it onto
-// `path`. On failure the temporary is removed and InputError(path, "cannot write: ...") thrown.
+// `path`. On failure the temporary is removed and InputError(path, "cannot write: ...") thrown;
+// while it exists, SIGINT/SIGTERM remove it (core/image/interrupt_cleanup.h).
 void write_atomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
                       const void* pixels) {
     const std::string tmp = temporary_path_for(path);
+    const TemporaryFileGuard guard(tmp);
     bool ok = false;
     std::string reason;
+    int error = 0;
     {
+        errno = 0;
         std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(tmp);
         if (!out) {
+            error = errno;
             reason = OIIO::geterror();
         } else if (!out->open(tmp, spec)) {
+            error = errno;
             reason = out->geterror();
         } else {
             ok = out->write_image(type, pixels);
-            if (!ok) reason = out->geterror();
+            if (!ok) {
+                error = errno;
+                reason = out->geterror();
+            }
             if (!out->close() && ok) {
                 ok = false;
+                error = errno;
                 reason = out->geterror();
             }
         }
     }
     if (ok && std::rename(tmp.c_str(), path.c_str()) != 0) {
         ok = false;
-        reason = std::string("cannot rename the temporary file: ") + std::strerror(errno);
+        error = errno;
+        reason = "cannot rename the temporary file";
     }
     if (!ok) {
         std::remove(tmp.c_str());
-        throw InputError(path, "cannot write: " + (reason.empty() ? "unknown error" : reason));
+        throw InputError(path, "cannot write: " + write_failure(reason, error, tmp, path));
     }
 }
 

@@ -315,7 +315,7 @@ TEST_F(BadInputJson, MissingMeshFiles) {
         "bad.json",
         {
             {"missing obj", with_object(R"({"type": "mesh", "file": "none.obj"})"),
-             "bad.json#/objects/0/file", "mesh file not found: 'none.obj'"},
+             "bad.json#/objects/0/file", "cannot open mesh file 'none.obj': No such file or directory"},
             {"missing glb in a folder", with_object(R"({"type": "mesh", "file": "no/none.glb"})"),
              "bad.json#/objects/0/file", "'no/none.glb'"},
             {"unknown mesh format", with_object(R"({"type": "mesh", "file": "a.stl"})"),

@@ -1,22 +1,39 @@
 #pragma once
 // A GoogleTest fixture that runs the built `rayo` executable (RAYO_CLI_PATH) in a fresh folder
 // of its own, so tests can check exit status, messages and which files a command left behind.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <set>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace rayo_test {
 
 struct CommandResult {
     int exit_code;
     std::string output;  // stdout and stderr together
+};
+
+// A run watched from outside: its bounds (wall time, peak memory) and how it ended.
+struct WatchedResult {
+    int exit_code = -1;      // -1 when killed by a signal or by the time limit
+    int shell_status = -1;   // as a shell reports it: the exit code, or 128 + the signal
+    bool timed_out = false;  // still running after the limit (then killed)
+    double seconds = 0.0;    // wall time until it ended
+    long peak_rss_kb = 0;    // its own peak resident set (wait4)
+    std::string output;      // stdout and stderr together
 };
 
 class CliFixture : public ::testing::Test {
@@ -43,6 +60,68 @@ class CliFixture : public ::testing::Test {
         text << in.rdbuf();
         std::filesystem::remove(log);
         return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+    }
+
+    // Runs `rayo ARGS` (one argument per element, no shell) in the folder with SIGINT and
+    // SIGTERM at their defaults, calls `while_running(pid)` every millisecond until it returns
+    // true (e.g. once it has sent a signal) or the process ends, and kills it after
+    // `limit_seconds`.
+    // `file_size_limit_bytes` > 0 sets RLIMIT_FSIZE for the run (writes beyond it fail).
+    WatchedResult run_watched(const std::vector<std::string>& args, double limit_seconds,
+                              const std::function<bool(pid_t)>& while_running = {},
+                              rlim_t file_size_limit_bytes = 0) const {
+        const std::filesystem::path log =
+            m_dir.parent_path() / (m_dir.filename().string() + ".log");
+        std::vector<std::string> argv_text{RAYO_CLI_PATH};
+        argv_text.insert(argv_text.end(), args.begin(), args.end());
+        std::vector<char*> argv;
+        for (std::string& a : argv_text) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        const auto start = std::chrono::steady_clock::now();
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            std::signal(SIGINT, SIG_DFL);
+            std::signal(SIGTERM, SIG_DFL);
+            const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            if (fd < 0 || ::chdir(m_dir.c_str()) != 0) ::_exit(127);
+            if (file_size_limit_bytes > 0) {
+                const struct rlimit limit { file_size_limit_bytes, file_size_limit_bytes };
+                ::setrlimit(RLIMIT_FSIZE, &limit);
+            }
+            ::dup2(fd, 1);
+            ::dup2(fd, 2);
+            ::execv(argv[0], argv.data());
+            ::_exit(127);
+        }
+        WatchedResult result;
+        bool watching = static_cast<bool>(while_running);
+        int status = 0;
+        struct rusage usage {};
+        for (;;) {
+            const pid_t done = ::wait4(pid, &status, WNOHANG, &usage);
+            if (done == pid) break;
+            const double elapsed =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (elapsed > limit_seconds && !result.timed_out) {
+                result.timed_out = true;
+                ::kill(pid, SIGKILL);
+            }
+            if (watching && while_running(pid)) watching = false;
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        result.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        result.peak_rss_kb = usage.ru_maxrss;
+        result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        result.shell_status = WIFEXITED(status)     ? WEXITSTATUS(status)
+                              : WIFSIGNALED(status) ? 128 + WTERMSIG(status)
+                                                    : -1;
+        std::ifstream in(log);
+        std::stringstream text;
+        text << in.rdbuf();
+        std::filesystem::remove(log);
+        result.output = text.str();
+        return result;
     }
 
     std::filesystem::path write(const std::string& name, const std::string& text) const {
