@@ -6,7 +6,8 @@
 # Keep a crashing input as a regression test (tests/data/bad/) once it is fixed.
 # JSON gets a larger -max_len (262144 bytes) so that inputs can nest far past the 256-level limit
 # and still carry structure around it; the line readers keep 16384.
-# For the documented long run (docs/limits.md): fuzz/run.sh 3600
+# For the documented long run (docs/limits.md): fuzz/run.sh 3600 (RAYO_FUZZ_PARALLEL=1 runs the
+# readers at once, RAYO_FUZZ_NICE=19 lowers their priority).
 # Usage: fuzz/run.sh [SECONDS] [reader...]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -22,20 +23,30 @@ for r in "${readers[@]}"; do targets+=("${r}_fuzz"); done
 cmake --build --preset asan -j "${RAYO_JOBS:-2}" --target "${targets[@]}"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
-status=0
-for r in "${readers[@]}"; do
-  work="$root/build-asan/fuzz-long/$r"
+# One reader: its fuzzer for SECONDS; the log goes to build-asan/fuzz-long/<reader>/log.
+fuzz_one() {
+  local r="$1" work="$root/build-asan/fuzz-long/$1" max_len=16384 dict=()
   mkdir -p "$work/corpus" "$work/artifacts"
-  dict=()
   if [[ -f "$root/fuzz/$r.dict" ]]; then dict=(-dict="$root/fuzz/$r.dict"); fi
-  max_len=16384
   if [[ "$r" == json ]]; then max_len=262144; fi
-  echo "fuzz/run.sh: $r for ${seconds} s (max_len ${max_len})"
-  if ! "$root/build-asan/${r}_fuzz" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-      -max_len="$max_len" -print_final_stats=1 -artifact_prefix="$work/artifacts/" "${dict[@]}" \
-      "$work/corpus" "$root/fuzz/corpus/$r"; then
-    echo "fuzz/run.sh: $r found a problem; see $work/artifacts/" >&2
-    status=1
+  echo "fuzz/run.sh: $r for ${seconds} s (max_len ${max_len}), log in $work/log"
+  if ! nice -n "${RAYO_FUZZ_NICE:-0}" "$root/build-asan/${r}_fuzz" -max_total_time="$seconds" \
+      -timeout=10 -rss_limit_mb=2048 -max_len="$max_len" -print_final_stats=1 \
+      -artifact_prefix="$work/artifacts/" "${dict[@]}" "$work/corpus" "$root/fuzz/corpus/$r" \
+      >"$work/log" 2>&1; then
+    echo "fuzz/run.sh: $r found a problem; see $work/artifacts/ and $work/log" >&2
+    return 1
   fi
-done
+  grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb|cov: .*corp" "$work/log" | tail -3
+}
+
+# RAYO_FUZZ_PARALLEL=1 runs the readers at the same time (each gets a share of the cores).
+status=0
+if [[ "${RAYO_FUZZ_PARALLEL:-0}" == 1 ]]; then
+  pids=()
+  for r in "${readers[@]}"; do fuzz_one "$r" & pids+=($!); done
+  for p in "${pids[@]}"; do wait "$p" || status=1; done
+else
+  for r in "${readers[@]}"; do fuzz_one "$r" || status=1; done
+fi
 exit $status
