@@ -208,11 +208,12 @@ TEST_F(BadInputFiles, ObjIndexErrorsAreFoundBeforeTheWholeFileIsParsed) {
         EXPECT_NE(r.output.find(std::string("rayo: error: ") + name + ".obj:4: face index"),
                   std::string::npos)
             << r.output;
-        // The text itself plus the process's baseline; tinyobjloader's parse needs several
-        // times the file's size.
+        // The text and the scan's churn above the process's baseline stay under 4 times the
+        // file's size (1.6 in Release, 3.3 under ASan, whose quarantine keeps freed blocks);
+        // tinyobjloader's parse needed 8.7 times it (299 MB for this 34 MB file).
         const WatchedResult baseline = run_watched({"render", "--width", "16", "-o", "b.png"}, 60);
         fs::remove(m_dir / "b.png");
-        EXPECT_LT(r.peak_rss_kb - baseline.peak_rss_kb, 2 * file_kb)
+        EXPECT_LT(r.peak_rss_kb - baseline.peak_rss_kb, 4 * file_kb)
             << name << ": peak " << r.peak_rss_kb << " kB, baseline " << baseline.peak_rss_kb
             << " kB, file " << file_kb << " kB";
     }
