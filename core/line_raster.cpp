@@ -12,10 +12,15 @@ void draw_line(Film& film, const DVec2& a, const DVec2& b, const Vec3& rgb) {
     const long steps = static_cast<long>(std::ceil(length));
     for (long i = 0; i <= steps; ++i) {
         const DVec2 p = steps == 0 ? a : a + (static_cast<double>(i) / steps) * delta;
-        const double x = std::floor(p.x + 0.5), y = std::floor(p.y + 0.5);
-        if (x >= 0.0 && y >= 0.0 && x < film.width() && y < film.height()) {
-            film.set(static_cast<int>(x), static_cast<int>(y), rgb, 1.0f);
+        // Pixel i covers [i − ½, i + ½); the window's far edges (w − ½, h − ½) belong to the
+        // last pixel.
+        if (!(p.x >= -0.5 && p.y >= -0.5 && p.x <= film.width() - 0.5 &&
+              p.y <= film.height() - 0.5)) {
+            continue;
         }
+        const int x = std::min(static_cast<int>(std::floor(p.x + 0.5)), film.width() - 1);
+        const int y = std::min(static_cast<int>(std::floor(p.y + 0.5)), film.height() - 1);
+        film.set(x, y, rgb, 1.0f);
     }
 }
 
