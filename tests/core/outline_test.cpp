@@ -205,5 +205,17 @@ TEST(OutlineCircle, ChordsStayWithinAQuarterPixel) {
     }
 }
 
+TEST(Outline, EveryRegisteredShapeHasOne) {
+    // One shape of each registered type with its default fields, in front of the eye: each
+    // draws something (a new shape without outline() does not compile in draw_wireframe).
+    Shapes shapes;
+    shapes.for_each([](auto& v) { v.emplace_back(); });
+    shapes.for_each([](const auto& v) {
+        Outline out = outline_from(DVec3(0.3, 0.4, 6.0));
+        v.front().outline(out);
+        EXPECT_GE(out.segments().size(), 4u) << ShapeOf<decltype(v)>::kName;
+    });
+}
+
 }  // namespace
 }  // namespace rayo
