@@ -27,7 +27,9 @@ PreviewResult render_preview(const SceneDescription& description, const PreviewO
             for (size_t c = 0; c < 3; ++c) rgba[i + c] *= options.render_gain;
         }
     } else {
-        result.film = Film(camera.width(), camera.height());  // black, alpha 0
+        result.film = Film(camera.width(), camera.height());
+        // Opaque black, as a render's background is opaque.
+        for (size_t i = 3; i < result.film.rgba().size(); i += 4) result.film.rgba()[i] = 1.0f;
     }
     const auto start = std::chrono::steady_clock::now();
     result.stats = draw_wireframe(description.scene, camera, result.film, options.line_rgb);

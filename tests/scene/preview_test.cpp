@@ -37,7 +37,7 @@ bool is_line(const Film& film, int x, int y, const Vec3& line) {
     return film.rgb(x, y) == line;
 }
 
-TEST(Preview, LinesAloneAreOnTransparentBlack) {
+TEST(Preview, LinesAloneAreOnOpaqueBlack) {
     const SceneDescription d = sphere_scene();
     PreviewOptions options;
     const PreviewResult r = render_preview(d, options);
@@ -47,11 +47,11 @@ TEST(Preview, LinesAloneAreOnTransparentBlack) {
     for (int y = 0; y < 90; ++y) {
         for (int x = 0; x < 120; ++x) {
             const float* p = &r.film.rgba()[(static_cast<size_t>(y) * 120 + x) * 4];
+            EXPECT_EQ(p[3], 1.0f);
             if (is_line(r.film, x, y, options.line_rgb)) {
-                EXPECT_EQ(p[3], 1.0f);
                 ++lines;
             } else {
-                EXPECT_EQ(p[0] + p[1] + p[2] + p[3], 0.0f) << x << "," << y;
+                EXPECT_EQ(p[0] + p[1] + p[2], 0.0f) << x << "," << y;
             }
         }
     }
@@ -89,8 +89,9 @@ TEST(Preview, SphereOutlineIsWithinAPixelOfTheRenderedSilhouette) {
     const auto hit = [&](int x, int y) {
         return x >= 0 && y >= 0 && x < w && y < h && render.film.rgb(x, y).x > 0.0f;
     };
+    const Vec3 line_rgb = PreviewOptions{}.line_rgb;
     const auto line = [&](int x, int y) {
-        return x >= 0 && y >= 0 && x < w && y < h && preview.film.rgba()[(y * w + x) * 4 + 3] > 0;
+        return x >= 0 && y >= 0 && x < w && y < h && preview.film.rgb(x, y) == line_rgb;
     };
     // Is there a pixel of `set` in the 3×3 neighbourhood of (x, y)?
     const auto near = [](const auto& set, int x, int y) {
