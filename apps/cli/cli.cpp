@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -442,39 +443,35 @@ struct PreviewArgs {
     bool over_render = false;
 };
 
+// Preview takes --over-render and, with render's meaning and parsing, the render flags below;
+// it refuses the other render flags (samples, sphere methods, ...) as unknown.
 PreviewArgs parse_preview_args(const std::vector<std::string>& args) {
+    static const std::set<std::string> kWithValue = {
+        "-o",        "--output", "--width", "--height", "--threads", "--nff-light-intensity",
+        "--display", "--view"};
+    static const std::set<std::string> kWithoutValue = {"--quiet", "-q"};
     PreviewArgs p;
-    RenderArgs& r = p.render;
-    ArgCursor cursor(args);
-    while (cursor.next()) {
-        const std::string& a = cursor.current();
-        if (a == "-o" || a == "--output") {
-            r.output = cursor.value();
-        } else if (a == "--width") {
-            r.width = parse_int(a, cursor.value(), 1, kMaxImageSide);
-        } else if (a == "--height") {
-            r.height = parse_int(a, cursor.value(), 1, kMaxImageSide);
-        } else if (a == "--threads") {
-            r.threads = parse_int(a, cursor.value(), 1, 4096);
-        } else if (a == "--over-render") {
+    std::vector<std::string> render_args;
+    bool scene_seen = false;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (a == "--over-render") {
             p.over_render = true;
-        } else if (a == "--nff-light-intensity") {
-            r.load_options.nff.light_intensity =
-                static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
-        } else if (a == "--display") {
-            r.output_options.display = cursor.value();
-        } else if (a == "--view") {
-            r.output_options.view = cursor.value();
-        } else if (a == "--quiet" || a == "-q") {
-            r.quiet = true;
+        } else if (kWithValue.count(a)) {
+            render_args.push_back(a);
+            if (i + 1 < args.size()) render_args.push_back(args[++i]);
+        } else if (kWithoutValue.count(a)) {
+            render_args.push_back(a);
         } else if (!a.empty() && a[0] == '-') {
             throw UsageError("unknown option '" + a + "' (see rayo --help)");
-        } else if (!r.scene_path) {
-            r.scene_path = a;
+        } else if (!scene_seen) {
+            scene_seen = true;
+            render_args.push_back(a);
         } else {
             throw UsageError("unexpected argument '" + a + "': only one scene per preview");
         }
     }
+    p.render = parse_render_args(render_args);
     return p;
 }
 

@@ -163,27 +163,26 @@ TEST(MeshOutline, TetrahedronHasSixEdges) {
     EXPECT_EQ(out.segments().size(), 6u);
 }
 
-TEST(MeshOutline, PolygonsSharingAnEdgeByPositionDrawItOnceAndSkipFlatDiagonals) {
-    // Two unit squares side by side in z = 0, each its own polygon (own vertex copies, two
-    // triangles each): the outline is the 2×1 rectangle's six unit edges; the shared edge and
-    // the diagonals lie inside the flat face.
-    TriangleMesh flat;
-    ASSERT_TRUE(
-        flat.add_polygon({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}, {}, 0));
-    ASSERT_TRUE(
-        flat.add_polygon({Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(1, 1, 0)}, {}, 0));
+// How many segments outline the unit square [0,1]² in z = 0 and a second unit square beside it,
+// from (1, 0, 0) and (1, 1, 0) to x = 2 at height `far_z`, each added as its own polygon (its
+// own corners, two triangles).
+size_t two_squares_segments(float far_z) {
+    TriangleMesh mesh;
+    EXPECT_TRUE(
+        mesh.add_polygon({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}, {}, 0));
+    EXPECT_TRUE(mesh.add_polygon(
+        {Vec3(1, 0, 0), Vec3(2, 0, far_z), Vec3(2, 1, far_z), Vec3(1, 1, 0)}, {}, 0));
     Outline out = outline_from(DVec3(0, 0, 10));
-    flat.outline(out);
-    EXPECT_EQ(out.segments().size(), 6u);
+    mesh.outline(out);
+    return out.segments().size();
+}
+
+TEST(MeshOutline, PolygonsSharingAnEdgeByPositionDrawItOnceAndSkipFlatDiagonals) {
+    // Flat: the 2×1 rectangle's six unit edges; the shared edge and the diagonals lie inside
+    // the flat face.
+    EXPECT_EQ(two_squares_segments(0.0f), 6u);
     // Folded along the shared edge: that edge is drawn (once), the diagonals still are not.
-    TriangleMesh folded;
-    ASSERT_TRUE(
-        folded.add_polygon({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}, {}, 0));
-    ASSERT_TRUE(
-        folded.add_polygon({Vec3(1, 0, 0), Vec3(2, 0, 1), Vec3(2, 1, 1), Vec3(1, 1, 0)}, {}, 0));
-    Outline folded_out = outline_from(DVec3(0, 0, 10));
-    folded.outline(folded_out);
-    EXPECT_EQ(folded_out.segments().size(), 7u);
+    EXPECT_EQ(two_squares_segments(1.0f), 7u);
 }
 
 TEST(OutlineCircle, ChordsStayWithinAQuarterPixel) {
