@@ -9,8 +9,8 @@
 namespace rayo {
 
 struct PreviewOptions {
-    bool over_render = false;   // draw over a 1 spp render of the scene, darkened
-    float render_gain = 0.2f;   // what the render's RGB is multiplied by under the lines
+    bool over_render = false;  // draw over a 1 spp render of the scene, darkened
+    float render_gain = 0.2f;  // what the render's RGB is multiplied by under the lines
     Vec3 line_rgb{1.0f, 0.8f, 0.25f};
     int threads = 0;  // for the render under the lines; 0: all cores
 };
