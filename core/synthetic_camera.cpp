@@ -1,5 +1,6 @@
 #include "core/synthetic_camera.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -30,7 +31,7 @@ SyntheticCamera::SyntheticCamera(const Camera& camera) {
     m_centre_x = (w - 1.0) / 2.0;
     m_centre_y = (h - 1.0) / 2.0;
     m_window = ClipRect{-0.5, -0.5, w - 0.5, h - 0.5};
-    m_pixel_angle = m_hpixel / m_distance;
+    m_pixel_angle = std::min(m_hpixel, m_vpixel) / m_distance;  // the finer, for non-square pixels
 }
 
 DVec3 SyntheticCamera::to_camera(const DVec3& point) const {

@@ -38,8 +38,8 @@ class SyntheticCamera {
 
     // The window in film coordinates: the pixels' outer edges, [−½, width − ½] × [−½, height − ½].
     ClipRect window() const { return m_window; }
-    // The angle one pixel subtends at the image centre (radians): what outlines use to choose
-    // how finely to divide their curves.
+    // The angle one pixel subtends at the image centre (radians; the smaller side of a
+    // non-square pixel): what outlines use to choose how finely to divide their curves.
     double pixel_angle() const { return m_pixel_angle; }
     const DVec3& position() const { return m_position; }
 

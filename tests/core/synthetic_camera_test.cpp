@@ -72,6 +72,15 @@ TEST(SyntheticCamera, WindowIsTheImageEdges) {
     EXPECT_EQ(camera.window().y_max, 47.5);
 }
 
+TEST(SyntheticCamera, PixelAngleIsTheFinerSideOfAPixel) {
+    CameraDesc desc = front_desc();  // 64×48, hfov 60°: 2·tan 30°/64 across
+    EXPECT_NEAR(SyntheticCamera(Camera::create(desc)).pixel_angle(),
+                2.0 * std::tan(3.14159265358979323846 / 6.0) / 64.0, 1e-7);
+    desc.vfov_degrees = 20.0f;  // both given: 2·tan 10°/48 down, the smaller
+    EXPECT_NEAR(SyntheticCamera(Camera::create(desc)).pixel_angle(),
+                2.0 * std::tan(3.14159265358979323846 / 18.0) / 48.0, 1e-7);
+}
+
 // Cameras of every kind the window camera builds: fov across or down, both, the NFF convention,
 // odd and even sizes, a tilted up vector, an eye off the axes and a long distance.
 std::vector<CameraDesc> camera_variants() {
