@@ -11,11 +11,13 @@
 #include <map>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "apps/scene/default_scene.h"
+#include "apps/scene/preview.h"
 #include "apps/scene/renderer.h"
 #include "apps/scene/scene_loader.h"
 #include "bench/lab/accuracy_bench.h"
@@ -42,6 +44,8 @@ usage:
                                   the sphere-method study: CSV and charts (gnuplot) in DIR,
                                   scenes of N×N pixels [384]
   rayo texture NAME [options]     write a procedural texture flat (the plane z = 0)
+  rayo preview [SCENE] [options]  draw every object's outline from SCENE's camera, in well
+                                  under a second: framing before a long render
   rayo --help | --version
 
 render options:
@@ -76,6 +80,13 @@ texture options:
   --size WxH               image size in pixels [512x512]; 64 pixels per world unit
   --scale S                world units per feature, 1e-6..1e6 [1: the seed's 64-pixel cells]
   --seed N                 0..2147483647 [0]
+
+preview options (docs/preview.md):
+  -o, --output FILE        output image, as for render [SCENE's name with -preview.png]
+  --width W, --height H    resolution, as for render
+  --over-render            draw over a darkened 1 spp render instead of black
+  --threads N              worker threads for --over-render [all cores]
+  --nff-light-intensity X, --display D, --view V, --quiet   as for render
 
 The OCIO config is $OCIO when set, else rayo's own (sRGB display: sRGB, ACES 1.0 SDR-video, Raw).
 )";
@@ -429,6 +440,98 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
     return 0;
 }
 
+// `rayo preview [SCENE] [-o OUT] [--width W] [--height H] [--over-render] ...`: the wireframe
+// of the scene from its camera (apps/scene/preview.h), for framing a long render.
+struct PreviewArgs {
+    RenderArgs render;  // the scene, output and the flags preview shares with render
+    bool over_render = false;
+};
+
+// Preview takes --over-render and, with render's meaning and parsing, the render flags below;
+// it refuses the other render flags (samples, sphere methods, ...) as unknown.
+PreviewArgs parse_preview_args(const std::vector<std::string>& args) {
+    static const std::set<std::string> kWithValue = {
+        "-o",        "--output", "--width", "--height", "--threads", "--nff-light-intensity",
+        "--display", "--view"};
+    static const std::set<std::string> kWithoutValue = {"--quiet", "-q"};
+    PreviewArgs p;
+    std::vector<std::string> render_args;
+    bool scene_seen = false;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (a == "--over-render") {
+            p.over_render = true;
+        } else if (kWithValue.count(a)) {
+            render_args.push_back(a);
+            if (i + 1 < args.size()) render_args.push_back(args[++i]);
+        } else if (kWithoutValue.count(a)) {
+            render_args.push_back(a);
+        } else if (!a.empty() && a[0] == '-') {
+            throw UsageError("unknown option '" + a + "' (see rayo --help)");
+        } else if (!scene_seen) {
+            scene_seen = true;
+            render_args.push_back(a);
+        } else {
+            throw UsageError("unexpected argument '" + a + "': only one scene per preview");
+        }
+    }
+    p.render = parse_render_args(render_args);
+    return p;
+}
+
+int run_preview(const std::vector<std::string>& arg_list, std::ostream& out, std::ostream& err) {
+    const PreviewArgs args = parse_preview_args(arg_list);
+    const RenderArgs& r = args.render;
+    const auto total_start = std::chrono::steady_clock::now();
+    SceneDescription d =
+        r.scene_path ? load_scene_file(*r.scene_path, r.load_options) : make_default_scene();
+    const double parse_s = seconds_since(total_start);
+    if (!r.quiet) {
+        for (const std::string& w : d.warnings) err << "rayo: warning: " << w << "\n";
+    }
+    apply_overrides(r, d);
+    const std::string output =
+        r.output ? *r.output
+                 : (r.scene_path ? std::filesystem::path(*r.scene_path).stem().string()
+                                 : std::string("default")) +
+                       "-preview.png";
+    check_output(output, r.output_options);  // before the work, as for render
+
+    PreviewOptions options;
+    options.over_render = args.over_render;
+    options.threads = r.threads.value_or(0);
+    const PreviewResult result = render_preview(d, options);
+
+    OutputOptions output_options = r.output_options;
+    output_options.metadata["rayo:scene"] = d.source;
+    output_options.metadata["rayo:preview"] =
+        args.over_render ? "wireframe over a darkened 1 spp render" : "wireframe";
+    const auto write_start = std::chrono::steady_clock::now();
+    write_image(result.film, output, output_options);
+    const double write_s = seconds_since(write_start);
+
+    if (!r.quiet) {
+        const WireframeStats& s = result.stats;
+        const CameraDesc& cam = d.scene.camera;
+        const auto ms = [](double seconds) {
+            std::ostringstream text;
+            text << std::fixed << std::setprecision(seconds < 0.01 ? 1 : 0) << seconds * 1e3
+                 << " ms";
+            return text.str();
+        };
+        out << "rayo: " << output << " " << cam.width << "x" << cam.height << " preview | "
+            << s.objects << " objects (" << shape_summary(d.scene) << ", " << d.scene.meshes.size()
+            << " meshes) | segments " << s.segments << ": " << s.drawn << " drawn (" << s.cut
+            << " cut at the window or the eye), " << s.clipped_away() << " clipped away ("
+            << s.outside << " outside the window, " << s.behind << " behind the eye) | parse "
+            << ms(parse_s);
+        if (args.over_render) out << ", render " << ms(result.render_seconds);
+        out << ", lines " << ms(result.draw_seconds) << ", write " << ms(write_s) << " | total "
+            << ms(seconds_since(total_start)) << "\n";
+    }
+    return 0;
+}
+
 int run_info(const std::vector<std::string>& args, std::ostream& out) {
     if (args.size() != 1) throw UsageError("info: expected exactly one scene file");
     const SceneDescription d = load_scene_file(args[0]);
@@ -498,6 +601,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
         if (command == "info") return run_info(args, out);
         if (command == "bench") return run_bench(args, out);
         if (command == "texture") return run_texture(args, out);
+        if (command == "preview") return run_preview(args, out, err);
         throw UsageError("unknown command '" + command + "' (see rayo --help)");
     } catch (const UsageError& e) {
         err << "rayo: error: " << e.what() << "\n";

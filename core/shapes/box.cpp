@@ -103,4 +103,16 @@ void Box::parameterization(const Vec3& position, SurfaceHit& out) const {
     out.dpdu[u_axis] = size[u_axis];
 }
 
+void Box::outline(Outline& out) const {
+    // Corner k has max on axis i when bit i of k is set; an edge joins corners one bit apart.
+    const auto corner = [&](int k) {
+        return DVec3(k & 1 ? max.x : min.x, k & 2 ? max.y : min.y, k & 4 ? max.z : min.z);
+    };
+    for (int k = 0; k < 8; ++k) {
+        for (int bit = 1; bit < 8; bit <<= 1) {
+            if (!(k & bit)) out.add_segment(corner(k), corner(k | bit));
+        }
+    }
+}
+
 }  // namespace rayo

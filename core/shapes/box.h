@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "core/shapes/outline.h"
 #include "core/shapes/shape.h"
 #include "core/shapes/shape_fields.h"
 
@@ -29,6 +30,8 @@ struct Box {
                  ShapeHit& hit) const;
     void surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const;
     void parameterization(const Vec3& position, SurfaceHit& out) const;
+    // The twelve edges.
+    void outline(Outline& out) const;
 
     // The slab interval [t_enter, t_exit] and the faces' outward normals there; false when
     // the line misses the box.

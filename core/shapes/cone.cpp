@@ -143,4 +143,28 @@ void Cone::parameterization(const Vec3& position, SurfaceHit& out) const {
     out.dpdu = 2.0f * kPi * radius * (std::cos(angle) * e2 - std::sin(angle) * e1);
 }
 
+void Cone::outline(Outline& out) const {
+    const ConeFrame f = make_cone_frame(*this);
+    if (f.height == 0.0) return;
+    const DVec3 apex_center = f.base + f.height * f.axis;
+    out.add_circle(f.base, f.axis, f.base_radius);
+    out.add_circle(apex_center, f.axis, apex_radius);
+    // The generator at angle φ, P(s) = B + s·a + r(s)·e(φ) with e(φ) = cos φ·u + sin φ·v, has
+    // the normal e(φ) − slope·a all along it, and (P(s) − E)·(e − slope·a) does not depend on
+    // s: it is e·w + r0 − slope·(a·w), w = B − E. The silhouette generators make it zero:
+    // A cos φ + B sin φ = C with A = u·w, B = v·w, C = slope·(a·w) − r0.
+    DVec3 u, v;
+    perpendicular_frame(f.axis, u, v);
+    const DVec3 w = f.base - out.view().eye;
+    const double a = glm::dot(u, w), b = glm::dot(v, w);
+    const double c = f.slope * glm::dot(f.axis, w) - f.base_radius;
+    const double rho = std::hypot(a, b);
+    if (!(rho > std::abs(c))) return;  // the eye sees the surface from inside its extension
+    const double phi0 = std::atan2(b, a), delta = std::acos(c / rho);
+    for (const double phi : {phi0 - delta, phi0 + delta}) {
+        const DVec3 e = std::cos(phi) * u + std::sin(phi) * v;
+        out.add_segment(f.base + f.base_radius * e, apex_center + double(apex_radius) * e);
+    }
+}
+
 }  // namespace rayo

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/math.h"
+#include "core/shapes/outline.h"
 #include "core/shapes/shape.h"
 #include "core/shapes/shape_fields.h"
 
@@ -51,6 +52,8 @@ struct Cone {
     }
     void surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const;
     void parameterization(const Vec3& position, SurfaceHit& out) const;
+    // Both rims and the two generators along which rays from the eye graze the surface.
+    void outline(Outline& out) const;
 };
 
 ConeFrame make_cone_frame(const Cone& cone);

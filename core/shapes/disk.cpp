@@ -64,4 +64,8 @@ void Disk::parameterization(const Vec3& position, SurfaceHit& out) const {
     out.dpdu = 2.0f * kPi * (x * e2 - y * e1);
 }
 
+void Disk::outline(Outline& out) const {
+    out.add_circle(DVec3(center), glm::normalize(DVec3(normal)), radius);
+}
+
 }  // namespace rayo

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "core/shapes/outline.h"
 #include "core/shapes/shape.h"
 #include "core/shapes/shape_fields.h"
 
@@ -32,6 +33,8 @@ struct Disk {
                  ShapeHit& hit) const;
     void surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const;
     void parameterization(const Vec3& position, SurfaceHit& out) const;
+    // The rim.
+    void outline(Outline& out) const;
 };
 
 }  // namespace rayo

@@ -1,6 +1,9 @@
 #include "core/shapes/mesh.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <tuple>
 
 #include "core/shapes/polygon_triangulation.h"
 
@@ -68,6 +71,56 @@ bool TriangleMesh::add_polygon(const std::vector<Vec3>& vertices,
     if (triangles.empty()) return false;  // no area in double precision either
     append_polygon(*this, vertices, vertex_normals, triangles, material);
     return true;
+}
+
+void TriangleMesh::outline(Outline& out) const {
+    // One id per distinct position: NFF polygons and OBJ faces with split normals bring their
+    // own copies of shared corners.
+    const auto key = [&](uint32_t i) {
+        return std::make_tuple(positions[i].x, positions[i].y, positions[i].z);
+    };
+    std::vector<uint32_t> order(positions.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
+    std::vector<uint32_t> id(positions.size());
+    for (size_t k = 0; k < order.size(); ++k) {
+        id[order[k]] = k > 0 && key(order[k]) == key(order[k - 1]) ? id[order[k - 1]] : order[k];
+    }
+
+    struct Edge {
+        uint32_t lo, hi, triangle;
+    };
+    std::vector<Edge> edges;
+    edges.reserve(triangles.size() * 3);
+    for (uint32_t t = 0; t < triangles.size(); ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = id[triangles[t][k]], b = id[triangles[t][(k + 1) % 3]];
+            if (a != b) edges.push_back({std::min(a, b), std::max(a, b), t});
+        }
+    }
+    std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
+        return std::tie(a.lo, a.hi, a.triangle) < std::tie(b.lo, b.hi, b.triangle);
+    });
+
+    const auto normal = [&](uint32_t t) {
+        const DVec3 p0(positions[triangles[t][0]]), p1(positions[triangles[t][1]]),
+            p2(positions[triangles[t][2]]);
+        return glm::cross(p1 - p0, p2 - p0);
+    };
+    // Normals within about 1e-5 radians of each other and facing the same way.
+    const auto coplanar = [&](uint32_t s, uint32_t t) {
+        const DVec3 m = normal(s), n = normal(t);
+        const double scale = glm::length(m) * glm::length(n);
+        return scale > 0.0 && glm::dot(m, n) > 0.0 && glm::length(glm::cross(m, n)) <= 1e-5 * scale;
+    };
+    for (size_t i = 0; i < edges.size();) {
+        size_t j = i + 1;
+        while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
+        if (!(j - i == 2 && coplanar(edges[i].triangle, edges[i + 1].triangle))) {
+            out.add_segment(DVec3(positions[edges[i].lo]), DVec3(positions[edges[i].hi]));
+        }
+        i = j;
+    }
 }
 
 }  // namespace rayo

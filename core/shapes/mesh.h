@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "core/shapes/outline.h"
 
 namespace rayo {
 
@@ -33,6 +34,10 @@ struct TriangleMesh {
     // Returns false (adding nothing) in the same cases as add_convex_polygon.
     bool add_polygon(const std::vector<Vec3>& vertices, const std::vector<Vec3>& vertex_normals,
                      uint32_t material);
+    // The wireframe (core/shapes/outline.h): every edge once, vertices at one position counted
+    // as one; an edge between two coplanar triangles that face the same way (the inside of a
+    // triangulated polygon) is left out.
+    void outline(Outline& out) const;
 };
 
 }  // namespace rayo

@@ -15,6 +15,8 @@
 //   void surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const;
 //       // position, unit outward geometric and shading normals, object size
 //   void parameterization(const Vec3& position, SurfaceHit& out) const;  // uv and dpdu
+//   void outline(Outline& out) const;  // its lines seen from out.view().eye: the wireframe
+//       // preview (core/shapes/outline.h)
 //
 // Directions are unit length. A shape whose intersection wants per-shape precomputation names
 // it `using Intersector = ...; Intersector intersector() const;` (the cone's frame); otherwise

@@ -1,5 +1,7 @@
 #include "core/shapes/sphere.h"
 
+#include <cmath>
+
 namespace rayo {
 
 int Sphere::crossings(const Vec3& origin, const Vec3& direction,
@@ -33,6 +35,17 @@ void Sphere::parameterization(const Vec3& position, SurfaceHit& out) const {
     const float theta = std::acos(glm::clamp(n.y, -1.0f, 1.0f));
     out.uv = glm::vec2(0.5f + phi / (2.0f * kPi), theta / kPi);
     out.dpdu = 2.0f * kPi * radius * Vec3(n.z, 0.0f, -n.x);
+}
+
+void Sphere::outline(Outline& out) const {
+    // The rays from the eye E that touch the sphere form a cone; they touch it on the circle
+    // about C − (r²/d²)(C − E) of radius r·√(d² − r²)/d, in the plane normal to C − E
+    // (d = |C − E|): the tangent rays are perpendicular to the radius at the touching point.
+    const DVec3 c(center), to_center = c - out.view().eye;
+    const double r = radius, d2 = glm::dot(to_center, to_center);
+    if (!(d2 > r * r)) return;  // the eye inside or on the sphere: no silhouette
+    const double d = std::sqrt(d2);
+    out.add_circle(c - (r * r / d2) * to_center, to_center / d, r * std::sqrt(d2 - r * r) / d);
 }
 
 }  // namespace rayo

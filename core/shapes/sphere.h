@@ -16,6 +16,7 @@
 #include <optional>
 
 #include "core/math.h"
+#include "core/shapes/outline.h"
 #include "core/shapes/shape.h"
 #include "core/shapes/shape_fields.h"
 
@@ -45,6 +46,9 @@ struct Sphere {
                  ShapeHit& hit) const;
     void surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const;
     void parameterization(const Vec3& position, SurfaceHit& out) const;
+    // The silhouette from out.view().eye: the circle where the cone of rays from the eye
+    // touches the sphere (none when the eye is inside).
+    void outline(Outline& out) const;
 };
 
 // The seed's rule for two roots t0 <= t1: the near root if it lies in (tnear, tfar), else the

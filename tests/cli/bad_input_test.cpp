@@ -500,4 +500,36 @@ TEST_F(BadInputCli, FlagValuesCliTestDoesNotCover) {
     expect_refused("info nowhere.json", "nowhere.json", "cannot open", "info of a missing file");
 }
 
+// `rayo preview` refuses what `rayo render` refuses, with the same messages, and writes nothing.
+TEST_F(BadInputCli, PreviewRefusesWhatRenderRefuses) {
+    write("scene.nff", kGoodNff);
+    fs::create_directories(m_dir / "folder.png");
+    struct Case {
+        std::string args, place, expected;
+        int exit_code;
+    };
+    const Case cases[] = {
+        {"preview nowhere.nff -o out.png", "nowhere.nff", "cannot open", 1},
+        {"preview scene.nff -o out.bmpx", "out.bmpx", "unsupported image extension '.bmpx'", 1},
+        {"preview scene.nff -o no/such/dir/x.png", "no/such/dir/x.png",
+         "the directory 'no/such/dir' does not exist", 1},
+        {"preview scene.nff -o folder.png", "folder.png", "cannot write: it is a directory", 1},
+        {"preview scene.nff -o out.png --view Nope", "out.png", "unknown OCIO view 'Nope'", 1},
+        {"preview scene.nff -o out.png --width 30000 --height 30000", "scene.nff#/camera",
+         "exceeds the limit", 1},
+        {"preview scene.nff -o out.png --width 12px", "",
+         "--width: expected an integer in [1, 32768], got '12px'", 2},
+        {"preview scene.nff -o out.png --threads 0", "", "--threads: expected an integer", 2},
+        {"preview scene.nff -o out.png --spp 4", "", "unknown option '--spp'", 2},
+        {"preview scene.nff -o", "", "-o: missing value", 2},
+        {"preview scene.nff scene.nff -o out.png", "",
+         "unexpected argument 'scene.nff': only one scene per preview", 2},
+    };
+    for (const Case& c : cases) expect_refused(c.args, c.place, c.expected, c.args, c.exit_code);
+    // A scene with an error is refused with its place, as by render.
+    write("bad.nff", std::string(kGoodNff) + "s 0 0 1\n");
+    expect_refused("preview bad.nff -o out.png", "bad.nff:11", "'s' expects 4 numbers",
+                   "bad scene");
+}
+
 }  // namespace
