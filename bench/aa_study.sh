@@ -7,6 +7,7 @@
 # Writes docs/figures/aa_error.csv and the chart docs/figures/aa_error.{png,svg} (gnuplot).
 # Needs a build (build/rayo, build/image_compare) and ../shared/spd (or RAYO_SPD_DIR).
 # Usage: bench/aa_study.sh [SIZE]   (default 256; the scenes are balls_3.nff and mirror.json)
+#        CHART_ONLY=1 bench/aa_study.sh   redraws the chart from the CSV without rendering.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 spd="${RAYO_SPD_DIR:-$root/../shared/spd}"
@@ -29,29 +30,31 @@ render() {
     awk '/rays camera/ { rays = $3 } /time render/ { t = $3; sub(/s$/, "", t) } END { print rays, t }'
 }
 
-echo "scene,method,parameter,depth,camera_rays,rays_per_pixel,rms_relative,mean_relative,render_s" >"$csv"
-for entry in "${scenes[@]}"; do
-  name="${entry%%:*}" scene="${entry#*:}"
-  render "$scene" "$out/ref.exr" --spp 256 >/dev/null
-  row() {  # METHOD PARAMETER DEPTH EXR "RAYS SECONDS"
-    local method="$1" parameter="$2" depth="$3" exr="$4" rays seconds psnr mean
-    read -r rays seconds <<<"$5"
-    read -r _ mean psnr < <("$compare" "$exr" "$out/ref.exr")
-    awk -v n="$name" -v m="$method" -v p="$parameter" -v d="$depth" -v r="$rays" -v s="$seconds" \
-      -v px="$((size * size))" -v psnr="$psnr" -v mean="$mean" \
-      'BEGIN { printf "%s,%s,%s,%s,%d,%.3f,%.6g,%.6g,%s\n", n, m, p, d, r, r / px,
-               (psnr == "inf" ? 0 : 10 ^ (-psnr / 20)), mean, s }' >>"$csv"
-  }
-  for spp in 1 2 4 8 16 32 64; do
-    row stratified "$spp" - "$out/s.exr" "$(render "$scene" "$out/s.exr" --spp "$spp")"
-  done
-  for depth in 2 3 4; do
-    for threshold in 1 0.3 0.1 0.03 0.01; do
-      row adaptive "$threshold" "$depth" "$out/a.exr" \
-        "$(render "$scene" "$out/a.exr" --aa adaptive --aa-threshold "$threshold" --aa-depth "$depth")"
+if [[ -z ${CHART_ONLY:-} ]]; then
+  echo "scene,method,parameter,depth,camera_rays,rays_per_pixel,rms_relative,mean_relative,render_s" >"$csv"
+  for entry in "${scenes[@]}"; do
+    name="${entry%%:*}" scene="${entry#*:}"
+    render "$scene" "$out/ref.exr" --spp 256 >/dev/null
+    row() {  # METHOD PARAMETER DEPTH EXR "RAYS SECONDS"
+      local method="$1" parameter="$2" depth="$3" exr="$4" rays seconds psnr mean
+      read -r rays seconds <<<"$5"
+      read -r _ mean psnr < <("$compare" "$exr" "$out/ref.exr")
+      awk -v n="$name" -v m="$method" -v p="$parameter" -v d="$depth" -v r="$rays" -v s="$seconds" \
+        -v px="$((size * size))" -v psnr="$psnr" -v mean="$mean" \
+        'BEGIN { printf "%s,%s,%s,%s,%d,%.3f,%.6g,%.6g,%s\n", n, m, p, d, r, r / px,
+                 (psnr == "inf" ? 0 : 10 ^ (-psnr / 20)), mean, s }' >>"$csv"
+    }
+    for spp in 1 2 4 8 16 32 64; do
+      row stratified "$spp" - "$out/s.exr" "$(render "$scene" "$out/s.exr" --spp "$spp")"
+    done
+    for depth in 2 3 4; do
+      for threshold in 1 0.3 0.1 0.03 0.01; do
+        row adaptive "$threshold" "$depth" "$out/a.exr" \
+          "$(render "$scene" "$out/a.exr" --aa adaptive --aa-threshold "$threshold" --aa-depth "$depth")"
+      done
     done
   done
-done
+fi
 column -s, -t "$csv"
 
 for format in png svg; do
@@ -67,7 +70,7 @@ set key top right
 set xlabel 'camera rays per pixel'
 set ylabel 'RMS error / mean of the reference'
 do for [s in "balls_3 mirror"] {
-  set title s
+  set title s noenhanced
   plot '$csv' skip 1 using (strcol(1) eq s && strcol(2) eq 'stratified' ? \$6 : NaN):7 with linespoints pt 7 title 'stratified (spp 1-64)', \
        '' skip 1 using (strcol(1) eq s && strcol(2) eq 'adaptive' && \$4 == 2 ? \$6 : NaN):7 with linespoints pt 5 title 'adaptive, depth 2', \
        '' skip 1 using (strcol(1) eq s && strcol(2) eq 'adaptive' && \$4 == 3 ? \$6 : NaN):7 with linespoints pt 9 title 'adaptive, depth 3', \

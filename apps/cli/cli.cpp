@@ -385,7 +385,11 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
                 << cam.up.x << " " << cam.up.y << " " << cam.up.z;
     options.metadata["rayo:scene"] = d.source;
     options.metadata["rayo:camera"] = camera_text.str();
-    options.metadata["rayo:spp"] = std::to_string(d.settings.spp);
+    if (d.settings.aa == AntiAliasing::Adaptive) {
+        options.metadata["rayo:antialiasing"] = aa_summary(d.settings);
+    } else {
+        options.metadata["rayo:spp"] = std::to_string(d.settings.spp);
+    }
     options.metadata["rayo:threads"] = std::to_string(result.threads);
     options.metadata["rayo:render_seconds"] = std::to_string(result.render_seconds);
     start = std::chrono::steady_clock::now();
@@ -397,9 +401,11 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
         const RayCounters& c = result.counters;
         const double mrays =
             result.render_seconds > 0 ? c.total_rays() / result.render_seconds / 1e6 : 0.0;
-        out << "rayo: " << output << " " << cam.width << "x" << cam.height << " " << d.settings.spp
-            << "spp " << result.threads << " threads | parse " << format_duration(parse_s)
-            << ", bvh " << format_duration(result.bvh_seconds) << ", render "
+        out << "rayo: " << output << " " << cam.width << "x" << cam.height << " "
+            << (d.settings.aa == AntiAliasing::Adaptive ? "adaptive"
+                                                        : std::to_string(d.settings.spp) + "spp")
+            << " " << result.threads << " threads | parse " << format_duration(parse_s) << ", bvh "
+            << format_duration(result.bvh_seconds) << ", render "
             << format_duration(result.render_seconds) << ", write " << format_duration(write_s)
             << " | rays " << human_count(c.total_rays()) << " (camera " << human_count(c.camera)
             << ", shadow " << human_count(c.shadow) << ", reflect " << human_count(c.reflection)

@@ -165,21 +165,23 @@ glm::dvec2 centroid_of(SceneDescription d, const Vec3& direction) {
     return sum / weight;
 }
 
+// The emitter in `direction` appears centred on pixel (x, y), within 0.3 pixels.
+void expect_at(const SceneDescription& d, const Vec3& direction, double x, double y) {
+    const glm::dvec2 c = centroid_of(d, direction);
+    EXPECT_NEAR(c.x, x, 0.3) << direction.x << " " << direction.y << " " << direction.z;
+    EXPECT_NEAR(c.y, y, 0.3) << direction.x << " " << direction.y << " " << direction.z;
+}
+
 TEST(RenderFisheye, KnownDirectionsLandOnKnownPixels) {
     // 180° fisheye, 129 × 129: the centre pixel (64, 64) looks along −z; 90° off the axis is the
     // rim, 64.5 pixels out; 45° is half-way.
     SceneDescription d = emitter_scene(129, 45.0f);
     d.scene.camera.vfov_degrees.reset();
     d.scene.camera.projection = Projection::Fisheye;
-    const auto expect_at = [&](const Vec3& direction, double x, double y) {
-        const glm::dvec2 c = centroid_of(d, direction);
-        EXPECT_NEAR(c.x, x, 0.3) << direction.x << " " << direction.y << " " << direction.z;
-        EXPECT_NEAR(c.y, y, 0.3) << direction.x << " " << direction.y << " " << direction.z;
-    };
-    expect_at(Vec3(0, 0, -1), 64.0, 64.0);
-    expect_at(Vec3(1, 0, -1), 64.0 + 32.25, 64.0);                         // 45° right
-    expect_at(Vec3(0, 1, -1), 64.0, 64.0 - 32.25);                         // 45° up: toward row 0
-    expect_at(Vec3(-1, 0, -0.3639702f), 64.0 - 64.5 * 70.0 / 90.0, 64.0);  // 70° left
+    expect_at(d, Vec3(0, 0, -1), 64.0, 64.0);
+    expect_at(d, Vec3(1, 0, -1), 64.0 + 32.25, 64.0);  // 45° right
+    expect_at(d, Vec3(0, 1, -1), 64.0, 64.0 - 32.25);  // 45° up: toward row 0
+    expect_at(d, Vec3(-1, 0, -0.3639702f), 64.0 - 64.5 * 70.0 / 90.0, 64.0);  // 70° left
 }
 
 TEST(RenderPanorama, KnownDirectionsLandOnKnownPixels) {
@@ -189,16 +191,11 @@ TEST(RenderPanorama, KnownDirectionsLandOnKnownPixels) {
     d.scene.camera.vfov_degrees.reset();
     d.scene.camera.projection = Projection::Spherical;
     d.scene.camera.width = 256;
-    const auto expect_at = [&](const Vec3& direction, double x, double y) {
-        const glm::dvec2 c = centroid_of(d, direction);
-        EXPECT_NEAR(c.x, x, 0.3) << direction.x << " " << direction.y << " " << direction.z;
-        EXPECT_NEAR(c.y, y, 0.3) << direction.x << " " << direction.y << " " << direction.z;
-    };
-    expect_at(Vec3(0, 0, -1), 127.5, 63.5);
-    expect_at(Vec3(1, 0, 0), 191.5, 63.5);
-    expect_at(Vec3(-1, 0, 0), 63.5, 63.5);
-    expect_at(Vec3(0, 1, -1), 127.5, 31.5);
-    expect_at(Vec3(1, std::sqrt(2.0f), -1), 159.5, 31.5);  // longitude +45°, latitude +45°
+    expect_at(d, Vec3(0, 0, -1), 127.5, 63.5);
+    expect_at(d, Vec3(1, 0, 0), 191.5, 63.5);
+    expect_at(d, Vec3(-1, 0, 0), 63.5, 63.5);
+    expect_at(d, Vec3(0, 1, -1), 127.5, 31.5);
+    expect_at(d, Vec3(1, std::sqrt(2.0f), -1), 159.5, 31.5);  // longitude +45°, latitude +45°
 }
 
 // ---- Adaptive antialiasing ---------------------------------------------------------------------
