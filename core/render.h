@@ -10,7 +10,8 @@
 //               void radiance_coherent(const Ray*, int, Vec3*, RayCounters&) const;
 // The result does not depend on thread count, tile size or the coherent path: every pixel's
 // samples are summed in a fixed order by the one task that owns the pixel, and the coherent
-// path computes the same values as the single-ray one.
+// path computes the same values as the single-ray one. Adaptive antialiasing
+// (core/adaptive_aa.h) replaces the per-pixel samples tile by tile.
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/adaptive_aa.h"
 #include "core/math.h"
 #include "core/progress.h"
 #include "core/ray.h"
@@ -35,6 +37,9 @@ struct TileSettings {
     // Camera rays of a tile in batches through the integrator's coherent path (Embree streams);
     // false: one ray at a time (the reference the coherent path is tested against).
     bool coherent = true;
+    // Stratified: spp samples per pixel. Adaptive: corner subdivision, spp unused.
+    AntiAliasing aa = AntiAliasing::Stratified;
+    AdaptiveSettings adaptive;
 };
 
 // Camera ray for sample `s` of pixel (x, y): stratified jitter on the film (the pixel centre when
@@ -146,8 +151,13 @@ RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
             for (int item = range.begin(); item < range.end(); ++item) {
                 const Tile tile = grid.tile(tiles.empty() ? item : tiles[item]);
                 rgba.assign(tile.pixel_count() * 4, 0.0f);
-                render_tile(camera, integrator, settings.coherent, spp, inverse_spp, tile,
-                            rgba.data(), local);
+                if (settings.aa == AntiAliasing::Adaptive) {
+                    AdaptiveTile<Camera, Integrator>(camera, integrator, settings.adaptive, local)
+                        .render(tile, rgba.data());
+                } else {
+                    render_tile(camera, integrator, settings.coherent, spp, inverse_spp, tile,
+                                rgba.data(), local);
+                }
                 sink.write_tile(tile, rgba.data());
                 if (progress) progress->add(tile.pixel_count());
             }

@@ -1,6 +1,9 @@
 #include "core/sampling.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "core/math.h"
 
 namespace rayo {
 
@@ -22,6 +25,22 @@ PixelOffset stratified_offset(uint32_t x, uint32_t y, uint32_t s, uint32_t spp,
                      kBelowHalf),
             std::min((static_cast<float>(row) + jitter_y) / static_cast<float>(rows) - 0.5f,
                      kBelowHalf)};
+}
+
+glm::vec2 concentric_disk(const glm::vec2& u) {
+    const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f;  // the square [-1, 1]²
+    if (a == 0.0f && b == 0.0f) return glm::vec2(0.0f);
+    // Shirley–Chiu: the ring of half-side r = max(|a|, |b|) goes to the circle of radius r, the
+    // position along the ring to the angle, linearly within each of the four triangles.
+    float r, phi;
+    if (std::abs(a) > std::abs(b)) {
+        r = a;
+        phi = (kPi / 4.0f) * (b / a);
+    } else {
+        r = b;
+        phi = kPi / 2.0f - (kPi / 4.0f) * (a / b);
+    }
+    return glm::vec2(r * std::cos(phi), r * std::sin(phi));
 }
 
 }  // namespace rayo

@@ -49,4 +49,9 @@ inline glm::vec2 lens_sample(uint32_t x, uint32_t y, uint32_t s, uint32_t spp) {
     return glm::vec2(o.dx + 0.5f, o.dy + 0.5f);
 }
 
+// The unit square [0, 1)² onto the unit disk, area-preserving and keeping strata compact: the
+// concentric map of Shirley and Chiu, "A Low Distortion Map Between Disk and Square" (1997).
+// Square rings go to circles; (0.5, 0.5) goes to the centre.
+glm::vec2 concentric_disk(const glm::vec2& u);
+
 }  // namespace rayo

@@ -67,6 +67,11 @@ render options:
   --flat-spheres           mesh:N spheres with flat facets instead of smooth normals
   --single-rays            trace camera and shadow rays one by one instead of as coherent
                            Embree streams per tile (same image; for comparisons)
+  --aa A                   stratified (spp jittered samples per pixel) or adaptive (corner
+                           subdivision, POV-Ray's recursive method; docs/antialiasing.md)
+  --aa-threshold X         adaptive: subdivide while corners differ by more than X (sum of
+                           the absolute RGBA differences), a number >= 0 [0.3]
+  --aa-depth N             adaptive: at most N subdivisions per pixel, 0..8 [3]
   --display D, --view V    OCIO display and view for PNG/TIFF/JPEG [config defaults]
   --range R                clamp (default) or normalize (divide by the image maximum)
   --half                   write EXR as half float
@@ -152,6 +157,9 @@ struct RenderArgs {
     std::optional<SphereMath> sphere_math;
     std::optional<SphereRepresentation> sphere_method;
     std::optional<float> max_error_px;
+    std::optional<AntiAliasing> aa;
+    std::optional<float> aa_threshold;
+    std::optional<int> aa_depth;
     SceneLoadOptions load_options;
     bool flat_spheres = false;
     bool single_rays = false;
@@ -200,6 +208,19 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             }
         } else if (a == "--max-error-px") {
             r.max_error_px = static_cast<float>(parse_number(a, cursor.value(), 1e-6, 1e6));
+        } else if (a == "--aa") {
+            const std::string& m = cursor.value();
+            if (m == "stratified") {
+                r.aa = AntiAliasing::Stratified;
+            } else if (m == "adaptive") {
+                r.aa = AntiAliasing::Adaptive;
+            } else {
+                throw UsageError(a + ": expected 'stratified' or 'adaptive', got '" + m + "'");
+            }
+        } else if (a == "--aa-threshold") {
+            r.aa_threshold = static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
+        } else if (a == "--aa-depth") {
+            r.aa_depth = parse_int(a, cursor.value(), 0, kMaxAdaptiveDepth);
         } else if (a == "--nff-light-intensity") {
             r.load_options.nff.light_intensity =
                 static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
@@ -263,6 +284,9 @@ void apply_overrides(const RenderArgs& args, SceneDescription& d) {
     if (args.flat_spheres) d.settings.spheres.mesh_smooth = false;
     if (args.single_rays) d.settings.coherent = false;
     if (args.max_error_px) d.settings.max_error_px = *args.max_error_px;
+    if (args.aa) d.settings.aa = *args.aa;
+    if (args.aa_threshold) d.settings.adaptive.threshold = *args.aa_threshold;
+    if (args.aa_depth) d.settings.adaptive.depth = *args.aa_depth;
 }
 
 std::string default_output_path(const RenderArgs& args) {
@@ -294,6 +318,17 @@ std::string shape_summary(const Scene& scene) {
     return text + std::to_string(scene.triangle_count()) + " triangles";
 }
 
+// "stratified, 4 spp" or "adaptive, threshold 0.3, depth 3".
+std::string aa_summary(const RenderSettings& s) {
+    std::ostringstream text;
+    if (s.aa == AntiAliasing::Adaptive) {
+        text << "adaptive, threshold " << s.adaptive.threshold << ", depth " << s.adaptive.depth;
+    } else {
+        text << "stratified, " << s.spp << " spp";
+    }
+    return text.str();
+}
+
 void print_stats_table(std::ostream& out, const SceneDescription& d, const RenderResult& r,
                        double parse_s, double write_s) {
     const RayCounters& c = r.counters;
@@ -302,6 +337,9 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "  scene                       " << d.source << "\n"
         << "  resolution                  " << d.scene.camera.width << "x" << d.scene.camera.height
         << ", " << d.settings.spp << " spp, tile " << d.settings.tile_size << "\n"
+        << "  camera                      " << projection_name(d.scene.camera.projection)
+        << (d.scene.camera.lens_radius > 0.0f ? ", thin lens" : "") << "\n"
+        << "  antialiasing                " << aa_summary(d.settings) << "\n"
         << "  threads                     " << r.threads << "\n"
         << "  sphere method               " << sphere_method_name(r.spheres.spheres) << " ("
         << sphere_math_name(r.spheres.math) << "): " << r.spheres.reason << "\n"
@@ -362,7 +400,11 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
                 << cam.up.x << " " << cam.up.y << " " << cam.up.z;
     options.metadata["rayo:scene"] = d.source;
     options.metadata["rayo:camera"] = camera_text.str();
-    options.metadata["rayo:spp"] = std::to_string(d.settings.spp);
+    if (d.settings.aa == AntiAliasing::Adaptive) {
+        options.metadata["rayo:antialiasing"] = aa_summary(d.settings);
+    } else {
+        options.metadata["rayo:spp"] = std::to_string(d.settings.spp);
+    }
     options.metadata["rayo:threads"] = std::to_string(result.threads);
     options.metadata["rayo:render_seconds"] = std::to_string(result.render_seconds);
     start = std::chrono::steady_clock::now();
@@ -374,9 +416,11 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
         const RayCounters& c = result.counters;
         const double mrays =
             result.render_seconds > 0 ? c.total_rays() / result.render_seconds / 1e6 : 0.0;
-        out << "rayo: " << output << " " << cam.width << "x" << cam.height << " " << d.settings.spp
-            << "spp " << result.threads << " threads | parse " << format_duration(parse_s)
-            << ", bvh " << format_duration(result.bvh_seconds) << ", render "
+        out << "rayo: " << output << " " << cam.width << "x" << cam.height << " "
+            << (d.settings.aa == AntiAliasing::Adaptive ? "adaptive"
+                                                        : std::to_string(d.settings.spp) + "spp")
+            << " " << result.threads << " threads | parse " << format_duration(parse_s) << ", bvh "
+            << format_duration(result.bvh_seconds) << ", render "
             << format_duration(result.render_seconds) << ", write " << format_duration(write_s)
             << " | rays " << human_count(c.total_rays()) << " (camera " << human_count(c.camera)
             << ", shadow " << human_count(c.shadow) << ", reflect " << human_count(c.reflection)

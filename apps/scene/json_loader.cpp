@@ -478,7 +478,10 @@ SceneDescription SceneParser::parse(const Json& root) {
     if (const Json* value = find(root, "camera")) {
         parse_camera(*value, "/camera", camera);
     }
-    if (!camera.hfov_degrees && !camera.vfov_degrees) camera.vfov_degrees = 45.0f;  // seed 002
+    if (camera.projection == Projection::Perspective && !camera.hfov_degrees &&
+        !camera.vfov_degrees) {
+        camera.vfov_degrees = 45.0f;  // seed 002
+    }
     Camera::create(camera, m_source + "#/camera");  // eye = look_at, up ∥ view, pixel limits
 
     if (const Json* value = find(root, "render")) parse_render(*value, "/render", out.settings);
@@ -517,7 +520,19 @@ void SceneParser::parse_camera(const Json& value, const std::string& pointer,
                                CameraDesc& camera) const {
     require_object(value, pointer, "a camera object");
     check_keys(value, pointer,
-               {"eye", "look_at", "up", "distance", "hfov", "vfov", "width", "height"});
+               {"eye", "look_at", "up", "distance", "hfov", "vfov", "width", "height", "projection",
+                "fov", "lens_radius", "focus_distance"});
+    if (const Json* v = find(value, "projection")) {
+        camera.projection = *parse_projection(
+            choice(*v, child(pointer, "projection"), {"perspective", "fisheye", "spherical"}));
+    }
+    const std::string projection = projection_name(camera.projection);
+    // What the projection's angle is, for messages about the fields of another projection.
+    const std::string its_angle =
+        "the " + projection + " projection " +
+        (camera.projection == Projection::Perspective ? "takes hfov or vfov"
+         : camera.projection == Projection::Fisheye   ? "takes its angle from fov"
+                                                      : "always covers 360 x 180 degrees");
     if (const Json* v = find(value, "eye")) camera.eye = vec3(*v, child(pointer, "eye"));
     if (const Json* v = find(value, "look_at")) {
         camera.look_at = vec3(*v, child(pointer, "look_at"));
@@ -527,12 +542,36 @@ void SceneParser::parse_camera(const Json& value, const std::string& pointer,
     for (const char* key : {"hfov", "vfov"}) {
         const Json* v = find(value, key);
         if (!v) continue;
+        if (camera.projection != Projection::Perspective) {
+            fail(child(pointer, key),
+                 "hfov and vfov apply to the perspective projection; " + its_angle);
+        }
         const float degrees = real(*v, child(pointer, key), Bound::Positive);
         if (!(degrees < 180.0f)) {
             fail(child(pointer, key),
                  "expected a field of view in (0, 180) degrees, got " + describe(*v));
         }
         (std::string(key) == "hfov" ? camera.hfov_degrees : camera.vfov_degrees) = degrees;
+    }
+    if (const Json* v = find(value, "fov")) {
+        if (camera.projection != Projection::Fisheye) {
+            fail(child(pointer, "fov"), "fov is the fisheye's image-circle angle; " + its_angle);
+        }
+        const float degrees = real(*v, child(pointer, "fov"), Bound::Positive);
+        if (!(degrees <= kMaxFisheyeFov)) {
+            fail(child(pointer, "fov"),
+                 "expected a fisheye angle in (0, 360] degrees, got " + describe(*v));
+        }
+        camera.fisheye_fov_degrees = degrees;
+    }
+    camera.lens_radius =
+        real_or(value, pointer, "lens_radius", camera.lens_radius, Bound::NonNegative);
+    if (camera.lens_radius > 0.0f && camera.projection != Projection::Perspective) {
+        fail(child(pointer, "lens_radius"),
+             "a thin lens needs the perspective projection, not " + projection);
+    }
+    if (const Json* v = find(value, "focus_distance")) {
+        camera.focus_distance = real(*v, child(pointer, "focus_distance"), Bound::Positive);
     }
     if (const Json* v = find(value, "width")) {
         camera.width = integer(*v, child(pointer, "width"), 1, kMaxImageSide);
@@ -548,9 +587,9 @@ void SceneParser::parse_camera(const Json& value, const std::string& pointer,
 void SceneParser::parse_render(const Json& value, const std::string& pointer,
                                RenderSettings& s) const {
     require_object(value, pointer, "a render settings object");
-    check_keys(
-        value, pointer,
-        {"spp", "max_depth", "min_contribution", "tile_size", "sphere_math", "sphere_method"});
+    check_keys(value, pointer,
+               {"spp", "max_depth", "min_contribution", "tile_size", "sphere_math", "sphere_method",
+                "aa", "aa_threshold", "aa_depth"});
     if (const Json* v = find(value, "spp")) s.spp = integer(*v, child(pointer, "spp"), 1, 1 << 20);
     if (const Json* v = find(value, "max_depth")) {
         s.whitted.max_depth = integer(*v, child(pointer, "max_depth"), 0, 64);
@@ -563,6 +602,16 @@ void SceneParser::parse_render(const Json& value, const std::string& pointer,
             fail(child(pointer, "tile_size"),
                  "expected " + tile_size_expectation() + ", got " + describe(*v));
         }
+    }
+    if (const Json* v = find(value, "aa")) {
+        s.aa = choice(*v, child(pointer, "aa"), {"stratified", "adaptive"}) == "adaptive"
+                   ? AntiAliasing::Adaptive
+                   : AntiAliasing::Stratified;
+    }
+    s.adaptive.threshold =
+        real_or(value, pointer, "aa_threshold", s.adaptive.threshold, Bound::NonNegative);
+    if (const Json* v = find(value, "aa_depth")) {
+        s.adaptive.depth = integer(*v, child(pointer, "aa_depth"), 0, kMaxAdaptiveDepth);
     }
     if (const Json* v = find(value, "sphere_math")) {
         s.sphere_math = *parse_sphere_math(

@@ -93,7 +93,9 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     // to keep the promise that the coherent path changes no bits.
     tiles.coherent =
         description.settings.coherent && result.spheres.spheres.method != SphereMethod::EmbreePoint;
-    result.coherent = tiles.coherent;
+    tiles.aa = description.settings.aa;
+    tiles.adaptive = description.settings.adaptive;
+    result.coherent = tiles.coherent && tiles.aa == AntiAliasing::Stratified;
 
     start = std::chrono::steady_clock::now();
     {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/adaptive_aa.h"
 #include "core/scene.h"
 #include "core/sphere_method.h"
 #include "core/tile_grid.h"
@@ -20,6 +21,8 @@ struct RenderSettings {
     SphereRepresentation spheres{SphereMethod::Auto};  // --sphere-method; auto by default
     float max_error_px = 0.5f;                         // auto's error budget, in pixels
     bool coherent = true;  // tiles' camera and shadow rays as Embree streams (--single-rays: no)
+    AntiAliasing aa = AntiAliasing::Stratified;  // "aa": stratified spp, or adaptive
+    AdaptiveSettings adaptive;                   // "aa_threshold", "aa_depth"
     WhittedSettings whitted;
 };
 

@@ -34,8 +34,7 @@ SphereChoice choose_sphere_method(const SceneDescription& d, const Camera& camer
         return choice;
     }
     // Angular size of a pixel (radians) and the scene's largest coordinate magnitude.
-    const float pixel_angle =
-        2.0f * std::tan(glm::radians(camera.vfov_degrees()) / 2.0f) / float(camera.height());
+    const float pixel_angle = camera.pixel_angle();
     float max_magnitude = max_abs_component(camera.desc().eye);
     float largest_radius_px = 0.0f;
     float worst_float_error_px = 0.0f;

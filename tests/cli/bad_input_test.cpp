@@ -483,6 +483,10 @@ TEST_F(BadInputCli, FlagValuesCliTestDoesNotCover) {
         {"--height 2147483648", "--height: expected an integer"},
         {"--width=64", "unknown option '--width=64'"},
         {"--range", "--range: missing value"},
+        {"--aa fast", "--aa: expected 'stratified' or 'adaptive', got 'fast'"},
+        {"--aa-threshold -0.1", "--aa-threshold: expected a number in [0, 1e+30], got '-0.1'"},
+        {"--aa-depth 9", "--aa-depth: expected an integer in [0, 8], got '9'"},
+        {"--aa-depth -1", "--aa-depth: expected an integer in [0, 8], got '-1'"},
         {"--view", "--view: missing value"},
     };
     for (const Flag& f : flags) {

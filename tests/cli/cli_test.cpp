@@ -181,4 +181,22 @@ TEST_F(CliTest, WidthAloneKeepsAspectRatio) {
     EXPECT_NE(r.output.find("64x48"), std::string::npos) << r.output;
 }
 
+TEST_F(CliTest, AntialiasingFlagsOverrideTheScene) {
+    write("scene.nff", kSmallNff);  // 32x24, one tile: adaptive traces at least the 33x25 corners
+    const CommandResult r =
+        run("render scene.nff --stats -o a.exr --aa adaptive --aa-threshold 0.05 --aa-depth 2");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("antialiasing                adaptive, threshold 0.05, depth 2"),
+              std::string::npos)
+        << r.output;
+    const size_t at = r.output.find("rays camera");
+    ASSERT_NE(at, std::string::npos) << r.output;
+    EXPECT_GT(std::stoull(r.output.substr(at + 12)), 33u * 25u) << r.output;
+    // The stratified default, and back to it from a scene that asks for adaptive.
+    const CommandResult s = run("render scene.nff --stats -o s.exr --spp 4 --aa stratified");
+    EXPECT_NE(s.output.find("antialiasing                stratified, 4 spp"), std::string::npos)
+        << s.output;
+    EXPECT_NE(s.output.find("rays camera                 3072"), std::string::npos) << s.output;
+}
+
 }  // namespace

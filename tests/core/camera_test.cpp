@@ -1,5 +1,6 @@
 // Tests of the seed 002 window camera (core/camera.h): pixel-centre rays, orientation in a
-// right-handed world, field-of-view variants, the NFF fov convention and input validation.
+// right-handed world, field-of-view variants, the NFF fov convention and input validation; the
+// seed 004 extensions: the thin lens, the fisheye and the spherical panorama.
 #include "core/camera.h"
 
 #include <gtest/gtest.h>
@@ -341,6 +342,177 @@ TEST(Camera, RefusesNonFiniteVectors) {
     d = valid_desc();
     d.up.x = inf;
     expect_refused(d, "up inf");
+}
+
+// ---- Thin lens (seed 004: the extended pupil) ------------------------------------------------
+
+// Where a ray meets the plane at depth `depth` along the camera's view direction.
+Vec3 at_depth(const Camera& camera, const Ray& ray, float depth) {
+    const float t = (depth - glm::dot(ray.origin - camera.desc().eye, camera.view())) /
+                    glm::dot(ray.direction, camera.view());
+    return ray.origin + t * ray.direction;
+}
+
+TEST(CameraThinLens, RaysThroughAFilmPointMeetOnTheFocalPlane) {
+    CameraDesc desc = valid_desc();
+    desc.lens_radius = 0.5f;
+    desc.focus_distance = 7.0f;
+    const Camera lens = Camera::create(desc);
+    desc.lens_radius = 0.0f;
+    const Camera pinhole = Camera::create(desc);
+    for (const glm::vec2 film : {glm::vec2(0.0f, 0.0f), glm::vec2(7.3f, 4.1f), glm::vec2(15, 8)}) {
+        const Vec3 sharp = at_depth(pinhole, pinhole.generate_ray(film.x, film.y), 7.0f);
+        float widest = 0.0f;
+        for (const glm::vec2 u : {glm::vec2(0.1f, 0.2f), glm::vec2(0.9f, 0.5f),
+                                  glm::vec2(0.5f, 0.99f), glm::vec2(0.0f, 0.0f)}) {
+            Ray ray;
+            ASSERT_TRUE(lens.generate_ray(film, u, ray));
+            // The origin lies on the lens disk: in the plane through the eye across the view.
+            const Vec3 offset = ray.origin - desc.eye;
+            EXPECT_NEAR(glm::dot(offset, lens.view()), 0.0f, 1e-6f);
+            EXPECT_LE(glm::length(offset), 0.5f + 1e-6f);
+            widest = std::max(widest, glm::length(offset));
+            expect_vec_near(at_depth(lens, ray, 7.0f), sharp, 2e-5f);
+            EXPECT_NEAR(glm::length(ray.direction), 1.0f, 1e-6f);
+        }
+        EXPECT_GT(widest, 0.4f);  // the lens samples really spread over the aperture
+    }
+}
+
+TEST(CameraThinLens, FocusDefaultsToTheLookAtDistanceAndBlursOffThePlane) {
+    CameraDesc desc = valid_desc();  // eye (0, 0, 5), look_at the origin
+    desc.lens_radius = 0.2f;
+    const Camera camera = Camera::create(desc);
+    EXPECT_FLOAT_EQ(camera.focus_distance(), 5.0f);
+    Ray a, b;
+    ASSERT_TRUE(camera.generate_ray(glm::vec2(8.0f, 4.0f), glm::vec2(0.0f, 0.5f), a));
+    ASSERT_TRUE(camera.generate_ray(glm::vec2(8.0f, 4.0f), glm::vec2(1.0f, 0.5f), b));
+    // Opposite ends of the lens: meet at depth 5, apart at depth 10 by the circle of confusion,
+    // 2·radius·|z − F|/F = 0.4 (similar triangles).
+    expect_vec_near(at_depth(camera, a, 5.0f), at_depth(camera, b, 5.0f), 1e-5f);
+    EXPECT_NEAR(glm::length(at_depth(camera, a, 10.0f) - at_depth(camera, b, 10.0f)), 0.4f, 1e-5f);
+}
+
+TEST(CameraThinLens, RefusesNegativeRadiusAndNonPositiveFocus) {
+    CameraDesc d = valid_desc();
+    d.lens_radius = -0.1f;
+    expect_refused(d, "lens_radius -0.1");
+    d.lens_radius = std::numeric_limits<float>::quiet_NaN();
+    expect_refused(d, "lens_radius NaN");
+    for (float focus : {0.0f, -2.0f, std::numeric_limits<float>::infinity()}) {
+        d = valid_desc();
+        d.focus_distance = focus;
+        expect_refused(d, "focus_distance " + std::to_string(focus));
+    }
+    d = valid_desc();
+    d.hfov_degrees.reset();
+    d.projection = Projection::Fisheye;
+    d.lens_radius = 0.1f;
+    expect_refused(d, "lens on a fisheye");
+}
+
+// ---- Fisheye and spherical projections (seed 004: the curved eye) -----------------------------
+
+// The unit direction at `degrees` from the view direction (0, 0, −1), turned toward `side`.
+Vec3 tilted(double degrees, const Vec3& side) {
+    const double a = degrees * kDegree;
+    return glm::normalize(Vec3(float(std::cos(a)) * Vec3(0, 0, -1) + float(std::sin(a)) * side));
+}
+
+Camera curved_camera(Projection projection, int width, int height, float fov = 180.0f) {
+    CameraDesc desc = front_camera(width, height);
+    desc.projection = projection;
+    desc.fisheye_fov_degrees = fov;
+    return Camera::create(desc);
+}
+
+Vec3 direction_at(const Camera& camera, float x, float y) {
+    Ray ray;
+    EXPECT_TRUE(camera.generate_ray(glm::vec2(x, y), glm::vec2(0.5f), ray)) << x << ", " << y;
+    return ray.direction;
+}
+
+TEST(CameraFisheye, AngleFromTheAxisGrowsLinearlyToHalfTheFovOnTheRim) {
+    // 101 × 81: the image circle is inscribed in the height, radius 40.5 pixels about the centre
+    // pixel (50, 40); its rim is fov/2 = 90° from the view direction.
+    const Camera camera = curved_camera(Projection::Fisheye, 101, 81);
+    const Vec3 right(1, 0, 0), up(0, 1, 0);
+    expect_vec_near(direction_at(camera, 50.0f, 40.0f), Vec3(0, 0, -1), 1e-6f);
+    for (double degrees : {10.0, 45.0, 90.0}) {
+        const float r = float(40.5 * degrees / 90.0);
+        expect_vec_near(direction_at(camera, 50.0f + r, 40.0f), tilted(degrees, right), 1e-5f);
+        expect_vec_near(direction_at(camera, 50.0f - r, 40.0f), tilted(degrees, -right), 1e-5f);
+        expect_vec_near(direction_at(camera, 50.0f, 40.0f - r), tilted(degrees, up), 1e-5f);
+        // Along the diagonal too: equidistant in every direction.
+        const float d = r / std::sqrt(2.0f);
+        expect_vec_near(direction_at(camera, 50.0f + d, 40.0f + d),
+                        tilted(degrees, glm::normalize(right - up)), 1e-5f);
+    }
+    EXPECT_NEAR(camera.pixel_angle(), kPi / 81.0f, 1e-7f);
+}
+
+TEST(CameraFisheye, NoRayOutsideTheImageCircle) {
+    const Camera camera = curved_camera(Projection::Fisheye, 101, 81);
+    Ray ray;
+    EXPECT_FALSE(camera.generate_ray(glm::vec2(0.0f, 0.0f), glm::vec2(0.5f), ray));  // corner
+    EXPECT_FALSE(camera.generate_ray(glm::vec2(50.0f + 40.6f, 40.0f), glm::vec2(0.5f), ray));
+    EXPECT_TRUE(camera.generate_ray(glm::vec2(50.0f + 40.4f, 40.0f), glm::vec2(0.5f), ray));
+    EXPECT_TRUE(camera.generate_ray(glm::vec2(50.0f, 40.0f - 40.5f), glm::vec2(0.5f), ray));
+}
+
+TEST(CameraFisheye, FullSphereLooksBackwardOnTheRim) {
+    // fov 360: half-way out is 90° (sideways), the rim straight behind the camera.
+    const Camera camera = curved_camera(Projection::Fisheye, 64, 64, 360.0f);
+    expect_vec_near(direction_at(camera, 31.5f + 16.0f, 31.5f), Vec3(1, 0, 0), 1e-5f);
+    expect_vec_near(direction_at(camera, 31.5f, 31.5f + 16.0f), Vec3(0, -1, 0), 1e-5f);
+    expect_vec_near(direction_at(camera, 31.5f - 32.0f, 31.5f), Vec3(0, 0, 1), 1e-5f);
+    // A narrow fisheye: 60° across the circle, so 30° on its rim.
+    const Camera narrow = curved_camera(Projection::Fisheye, 64, 64, 60.0f);
+    expect_vec_near(direction_at(narrow, 31.5f + 32.0f, 31.5f), tilted(30.0, Vec3(1, 0, 0)), 1e-5f);
+}
+
+TEST(CameraFisheye, RefusesFovOutsideZeroTo360AndPerspectiveAngles) {
+    for (float fov : {0.0f, -10.0f, 360.5f, std::numeric_limits<float>::quiet_NaN()}) {
+        CameraDesc d = front_camera(16, 16);
+        d.projection = Projection::Fisheye;
+        d.fisheye_fov_degrees = fov;
+        expect_refused(d, "fisheye fov " + std::to_string(fov));
+    }
+    CameraDesc d = front_camera(16, 16);
+    d.projection = Projection::Fisheye;
+    d.fisheye_fov_degrees = 360.0f;
+    EXPECT_NO_THROW(Camera::create(d));
+    d.vfov_degrees = 40.0f;
+    expect_refused(d, "vfov on a fisheye");
+    d.vfov_degrees.reset();
+    d.projection = Projection::Spherical;
+    d.hfov_degrees = 40.0f;
+    expect_refused(d, "hfov on a panorama");
+}
+
+TEST(CameraSpherical, LongitudeAcrossLatitudeDown) {
+    // 360° over 200 pixels, 180° over 100: the image centre (99.5, 49.5) looks along the view.
+    const Camera camera = curved_camera(Projection::Spherical, 200, 100);
+    expect_vec_near(direction_at(camera, 99.5f, 49.5f), Vec3(0, 0, -1), 1e-6f);
+    expect_vec_near(direction_at(camera, 99.5f + 50.0f, 49.5f), Vec3(1, 0, 0), 1e-5f);   // +90°
+    expect_vec_near(direction_at(camera, 99.5f - 50.0f, 49.5f), Vec3(-1, 0, 0), 1e-5f);  // −90°
+    expect_vec_near(direction_at(camera, -0.5f, 49.5f), Vec3(0, 0, 1), 1e-5f);  // left edge: behind
+    expect_vec_near(direction_at(camera, 199.5f, 49.5f), Vec3(0, 0, 1), 1e-5f);  // right edge too
+    expect_vec_near(direction_at(camera, 99.5f, -0.5f), Vec3(0, 1, 0), 1e-5f);   // top: zenith
+    expect_vec_near(direction_at(camera, 99.5f, 99.5f), Vec3(0, -1, 0), 1e-5f);  // bottom: nadir
+    // Latitude 45° up at longitude 45° right.
+    expect_vec_near(direction_at(camera, 99.5f + 25.0f, 49.5f - 25.0f),
+                    glm::normalize(Vec3(0.5f, std::sqrt(0.5f), -0.5f)), 1e-5f);
+    EXPECT_EQ(camera.hfov_degrees(), 360.0f);
+    EXPECT_EQ(camera.vfov_degrees(), 180.0f);
+}
+
+TEST(CameraPerspective, PixelAngleIsTheCentrePixelsAngle) {
+    CameraDesc desc = front_camera(100, 50);
+    desc.vfov_degrees = 90.0f;
+    const Camera camera = Camera::create(desc);
+    // The window is 2·tan(45°) = 2 units high at unit distance: 0.04 per pixel.
+    EXPECT_NEAR(camera.pixel_angle(), 0.04f, 1e-6f);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <vector>
 
 namespace rayo {
@@ -160,6 +161,45 @@ TEST(Sampling, OffsetsStayBelowHalfAtTheLargestJitter) {
     const PixelOffset b = stratified_offset(3355, 1616, 1, 4);  // column 1, row 0: dx
     EXPECT_LT(b.dx, 0.5f);
     EXPECT_GE(b.dx, 0.0f);
+}
+
+TEST(Sampling, ConcentricDiskMapsKnownPoints) {
+    // Shirley–Chiu: the square's centre to the disk's, edge midpoints and corners to the rim.
+    const auto near = [](glm::vec2 a, float x, float y) {
+        EXPECT_NEAR(a.x, x, 1e-6f) << a.x << ", " << a.y;
+        EXPECT_NEAR(a.y, y, 1e-6f) << a.x << ", " << a.y;
+    };
+    near(concentric_disk(glm::vec2(0.5f, 0.5f)), 0.0f, 0.0f);
+    near(concentric_disk(glm::vec2(1.0f, 0.5f)), 1.0f, 0.0f);
+    near(concentric_disk(glm::vec2(0.5f, 1.0f)), 0.0f, 1.0f);
+    near(concentric_disk(glm::vec2(0.0f, 0.5f)), -1.0f, 0.0f);
+    near(concentric_disk(glm::vec2(0.5f, 0.0f)), 0.0f, -1.0f);
+    const float h = std::sqrt(0.5f);
+    near(concentric_disk(glm::vec2(1.0f, 1.0f)), h, h);  // corner: 45° on the rim
+    near(concentric_disk(glm::vec2(0.0f, 0.0f)), -h, -h);
+    // A square ring of half-side r goes to the circle of radius r.
+    for (float t : {0.1f, 0.3f, 0.55f, 0.8f}) {
+        EXPECT_NEAR(glm::length(concentric_disk(glm::vec2(0.75f, 0.5f + t * 0.25f))), 0.5f, 1e-6f);
+    }
+}
+
+TEST(Sampling, ConcentricDiskPreservesArea) {
+    // Equal areas of the square go to equal areas of the disk: a 64×64 grid of cell centres puts
+    // a quarter of its points inside radius 1/2 and 9/16 inside 3/4, and none outside radius 1.
+    int inside_half = 0, inside_three_quarters = 0, outside = 0;
+    constexpr int kGrid = 64;
+    for (int j = 0; j < kGrid; ++j) {
+        for (int i = 0; i < kGrid; ++i) {
+            const float r =
+                glm::length(concentric_disk(glm::vec2((i + 0.5f) / kGrid, (j + 0.5f) / kGrid)));
+            inside_half += r < 0.5f;
+            inside_three_quarters += r < 0.75f;
+            outside += r > 1.0f;
+        }
+    }
+    EXPECT_NEAR(inside_half / double(kGrid * kGrid), 0.25, 0.005);
+    EXPECT_NEAR(inside_three_quarters / double(kGrid * kGrid), 0.5625, 0.005);
+    EXPECT_EQ(outside, 0);
 }
 
 }  // namespace
