@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "apps/scene/renderer.h"
+#include "core/error.h"
 
 namespace rayo {
 namespace {
@@ -15,6 +16,14 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 PreviewResult render_preview(const SceneDescription& description, const PreviewOptions& options) {
     const Camera camera = Camera::create(description.scene.camera, description.source + "#/camera");
+    if (camera.projection() != Projection::Perspective) {
+        // Seed 003's synthetic camera projects onto a plane; straight edges stay straight only
+        // there, and the outlines are polylines of straight segments.
+        throw InputError(description.source + "#/camera/projection",
+                         std::string("rayo preview draws perspective cameras only (the seed 003 "
+                                     "synthetic camera); this scene's is '") +
+                             projection_name(camera.projection()) + "'");
+    }
     PreviewResult result;
     if (options.over_render) {
         SceneDescription one_sample = description;

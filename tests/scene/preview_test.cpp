@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "apps/scene/renderer.h"
+#include "core/error.h"
 
 namespace rayo {
 namespace {
@@ -120,6 +121,24 @@ TEST(Preview, SphereOutlineIsWithinAPixelOfTheRenderedSilhouette) {
     }
     EXPECT_GT(silhouette_pixels, 60);
     EXPECT_GT(line_pixels, 60);
+}
+
+// The outlines are straight segments projected onto a plane: a fisheye or panorama camera is
+// refused by name rather than drawn as if it were a perspective one.
+TEST(Preview, CurvedProjectionsAreRefusedByTheirPointer) {
+    for (const Projection projection : {Projection::Fisheye, Projection::Spherical}) {
+        SceneDescription d = sphere_scene();
+        d.scene.camera.projection = projection;
+        d.scene.camera.hfov_degrees.reset();
+        try {
+            render_preview(d, PreviewOptions{});
+            ADD_FAILURE() << projection_name(projection) << " was drawn";
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.where(), "<preview test>#/camera/projection");
+            EXPECT_NE(e.message().find(projection_name(projection)), std::string::npos)
+                << e.message();
+        }
+    }
 }
 
 }  // namespace
