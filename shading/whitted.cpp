@@ -242,10 +242,13 @@ Vec3 WhittedIntegrator::add_transport(const Ray& ray, const SurfaceHit& hit, con
                 child.origin = offset_ray_origin(hit, -p.facing_geometric);
                 child.direction = glm::normalize(*refracted);
                 ++counters.refraction;
-                // Entering, the child travels inside this object (its absorption); leaving, it
-                // is back between objects.
-                transmit_color = transmit_weight * trace(child, depth + 1, child_weight, counters,
-                                                         p.entering ? p.base : nullptr);
+                // Entering an absorbing object, the child travels inside it (Beer–Lambert);
+                // leaving, or through a material that absorbs nothing (a thin pane, clear
+                // glass), it stays in the space between objects (the fog's).
+                const SurfaceCoefficients* inside =
+                    p.entering && p.base->absorbing() ? p.base : nullptr;
+                transmit_color =
+                    transmit_weight * trace(child, depth + 1, child_weight, counters, inside);
             } else {
                 ++counters.contribution_cut;
             }

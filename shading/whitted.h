@@ -42,8 +42,8 @@ class WhittedIntegrator {
         std::optional<SurfaceCoefficients> textured;  // its coefficients at the hit, if textured
         bool entering = true;
         Vec3 facing_geometric{0.0f}, normal{0.0f}, to_eye{0.0f}, shadow_origin{0.0f};
-        // The medium the arriving ray travelled through: the material whose inside it crossed,
-        // or null for the space between objects (the fog's).
+        // The medium the arriving ray travelled through: the absorbing material whose inside it
+        // crossed, or null for the space between objects (the fog's).
         const SurfaceCoefficients* medium = nullptr;
         // Not a stored pointer to `textured`: points are copied and must stay valid.
         const SurfaceCoefficients& material() const { return textured ? *textured : *base; }

@@ -116,6 +116,18 @@ TEST(Fog, BlendsTowardItsColourByExpOfMinusDensityTimesDistance) {
     expect_vec3(t.radiance(Vec3(0, 0, 10), Vec3(0, 1, 0)), 0.8, 0.6, 0.4, 1e-7);
 }
 
+TEST(Fog, ContinuesThroughAPaneThatAbsorbsNothing) {
+    // Through a thin clear pane (transmit 0.5, no absorption) the ray is still between objects:
+    // it misses everything and sees the fog colour C, times 0.5, seen through the 10 units of fog
+    // before the pane: 0.5·C·e^(−1) + C·(1 − e^(−1)). (Were the child "inside" the pane, its
+    // miss would see the black background: 0.5·0·e^(−1) + C·(1 − e^(−1)).)
+    Tracer t(R"({"rayo": 1, "fog": {"color": [0.8, 0.6, 0.4], "density": 0.1},
+      "materials": {"default": {"ka": 0, "kd": 0, "transmit": 0.5}},
+      "objects": [{"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 1}]})");
+    const double k = 1.0 - 0.5 * std::exp(-1.0);
+    expect_vec3(t.radiance(Vec3(0, 0, 10), Vec3(0, 0, -1)), 0.8 * k, 0.6 * k, 0.4 * k, 1e-6);
+}
+
 TEST(Absorption, BeerLambertOverTheChordOfASphere) {
     // A clear sphere (ior 1: rays go straight) of radius 1.5 absorbing σ per unit length, seen
     // against a white background: a ray at distance b from the centre crosses a chord
