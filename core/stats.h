@@ -8,16 +8,20 @@ namespace rayo {
 struct RayCounters {
     uint64_t camera = 0;
     uint64_t shadow = 0;
+    uint64_t shadow_filtered = 0;  // filtered shadows: rays continued past a transmissive surface
     uint64_t reflection = 0;
     uint64_t refraction = 0;
     uint64_t total_internal_reflections = 0;
     uint64_t depth_cut = 0;         // paths stopped by the maximum depth
     uint64_t contribution_cut = 0;  // paths stopped by the minimum-contribution threshold
 
-    uint64_t total_rays() const { return camera + shadow + reflection + refraction; }
+    uint64_t total_rays() const {
+        return camera + shadow + shadow_filtered + reflection + refraction;
+    }
     RayCounters& operator+=(const RayCounters& o) {
         camera += o.camera;
         shadow += o.shadow;
+        shadow_filtered += o.shadow_filtered;
         reflection += o.reflection;
         refraction += o.refraction;
         total_internal_reflections += o.total_internal_reflections;

@@ -61,6 +61,10 @@ inline void check_scene(const SceneDescription& d) {
         expect(finite(m.ka) && finite(m.kd) && finite(m.ks) && finite(m.reflect) &&
                    finite(m.transmit) && finite(m.shininess) && finite(m.ior) && m.ior > 0.0f,
                "material '" + m.name + "' has a non-finite or non-positive value");
+        expect(finite(m.translucency) && finite(m.absorption) && finite(m.emission) &&
+                   glm::all(glm::greaterThanEqual(m.absorption, Vec3(0.0f))),
+               "material '" + m.name +
+                   "' has a non-finite or negative translucency/absorption/emission");
     }
     for (const Light& l : d.shading.lights) {
         if (const auto* p = std::get_if<PointLight>(&l)) {
@@ -68,9 +72,17 @@ inline void check_scene(const SceneDescription& d) {
         } else if (const auto* dl = std::get_if<DirectionalLight>(&l)) {
             expect(finite(dl->direction) && finite(dl->color) && finite(dl->intensity),
                    "directional light");
+        } else if (const auto* a = std::get_if<AreaLight>(&l)) {
+            expect(finite(a->color) && finite(a->intensity) && a->samples >= 1 &&
+                       a->samples <= 4096 && finite(a->radiance()) && a->area() > 0.0f &&
+                       std::isfinite(a->area()),
+                   "area light");
         }
     }
     expect(finite(d.shading.ambient_light) && finite(d.shading.background), "ambient/background");
+    expect(finite(d.shading.fog.color) && std::isfinite(d.shading.fog.density) &&
+               d.shading.fog.density >= 0.0f,
+           "fog");
     expect(d.settings.spp >= 1 && d.settings.tile_size >= 1, "spp/tile size");
     expect(d.settings.whitted.max_depth >= 0 && d.settings.whitted.max_depth <= 64, "max depth");
     expect(finite(d.settings.whitted.min_contribution), "min contribution");

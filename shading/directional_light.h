@@ -11,6 +11,7 @@ struct DirectionalLight {
     Vec3 color{1.0f};
     float intensity = 1.0f;
 
+    int sample_count() const { return 1; }
     bool sample(const Vec3& /*point*/, const glm::vec2& /*u*/, LightSample& out) const {
         out.direction = -direction;
         out.distance = std::numeric_limits<float>::infinity();

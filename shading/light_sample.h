@@ -15,6 +15,9 @@ struct LightSample {
     float distance = std::numeric_limits<float>::infinity();
     Vec3 radiance{0.0f};
     float pdf = 1.0f;
+    // The point lies on an emitting surface that is also an object of the scene (area lights):
+    // its shadow ray must end just short of that very point.
+    bool on_surface = false;
 };
 
 }  // namespace rayo

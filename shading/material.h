@@ -40,11 +40,23 @@ struct SurfaceCoefficients {
     Vec3 reflect{0.0f};   // perfect mirror weight, seed 001
     Vec3 transmit{0.0f};  // perfect specular transmission weight, seed 001
     float ior = 1.0f;     // index of refraction of the inside (outside is 1)
+    // Fresnel weights (seed 000's W(θ)): reflect·F(θ) and transmit·(1 − F(θ)) with F the
+    // dielectric reflectance for `ior` (optics.h fresnel_reflectance) instead of the constants.
+    bool fresnel = false;
+    Vec3 translucency{0.0f};  // perfect diffuse transmission, seed 001: lights behind the surface
+    Vec3 absorption{0.0f};    // Beer–Lambert σ per unit length inside the object (seed 004)
+    Vec3 emission{0.0f};      // radiance the surface's front side sends to every ray that sees it
 
     bool transmissive() const {
         return transmit.x > 0.0f || transmit.y > 0.0f || transmit.z > 0.0f;
     }
     bool reflective() const { return reflect.x > 0.0f || reflect.y > 0.0f || reflect.z > 0.0f; }
+    bool translucent() const { return translucency != Vec3(0.0f); }
+    bool absorbing() const { return absorption != Vec3(0.0f); }
+    bool emissive() const { return emission != Vec3(0.0f); }
+    // Whether lights change its colour at all (a pure emitter, such as an area light's own
+    // surface, needs no shadow rays).
+    bool lit() const { return kd != Vec3(0.0f) || ks != Vec3(0.0f) || translucent(); }
 };
 
 struct Material : SurfaceCoefficients {

@@ -32,6 +32,7 @@ struct PointLight {
     float intensity = 1.0f;
     Attenuation attenuation;
 
+    int sample_count() const { return 1; }
     // False at the light's own position (no direction).
     bool sample(const Vec3& point, const glm::vec2& /*u*/, LightSample& out) const {
         const Vec3 offset = position - point;

@@ -1,10 +1,12 @@
 #pragma once
 // What the shaders need besides geometry: materials (indexed by the primitives' material ids),
-// lights, procedural textures (indexed by the materials), the ambient light Ia and the background.
+// lights, procedural textures (indexed by the materials), the ambient light Ia, the background
+// and the fog.
 #include <vector>
 
 #include "shading/light.h"
 #include "shading/material.h"
+#include "shading/media.h"
 #include "shading/texture.h"
 
 namespace rayo {
@@ -15,6 +17,7 @@ struct ShadingScene {
     std::vector<Texture> textures;  // MaterialTextures index this table
     Vec3 ambient_light{1.0f};       // Ia, seed 000 eq. [20]
     Vec3 background{0.0f};
+    Fog fog;  // none by default (density 0)
 };
 
 }  // namespace rayo

@@ -4,6 +4,7 @@
 #include <limits>
 #include <optional>
 
+#include "shading/media.h"
 #include "shading/optics.h"
 #include "shading/phong.h"
 
@@ -46,18 +47,28 @@ Vec3 offset_ray_origin(const SurfaceHit& hit, const Vec3& side_normal) {
 
 Vec3 WhittedIntegrator::radiance(const Ray& ray, RayCounters& counters) const {
     ++counters.camera;
-    return trace(ray, 0, Vec3(1.0f), counters);
+    return trace(ray, 0, Vec3(1.0f), counters, nullptr);
 }
 
-Vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const Vec3& weight,
-                              RayCounters& counters) const {
+Vec3 WhittedIntegrator::through_medium(const Vec3& radiance, float t,
+                                       const SurfaceCoefficients* medium) const {
+    if (medium)
+        return medium->absorbing() ? radiance * beer_lambert(medium->absorption, t) : radiance;
+    return m_scene.fog.enabled() ? m_scene.fog.apply(radiance, t) : radiance;
+}
+
+Vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const Vec3& weight, RayCounters& counters,
+                              const SurfaceCoefficients* medium) const {
     SurfaceHit hit;
-    if (!m_accel.intersect(ray, hit)) return m_scene.background;
-    return shade(ray, hit, depth, weight, counters);
+    if (!m_accel.intersect(ray, hit)) {
+        // A miss sees the background, or the pure fog colour (infinite distance, seed 004).
+        return !medium && m_scene.fog.enabled() ? m_scene.fog.color : m_scene.background;
+    }
+    return through_medium(shade(ray, hit, depth, weight, counters, medium), hit.t, medium);
 }
 
-WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(const Ray& ray,
-                                                           const SurfaceHit& hit) const {
+WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(
+    const Ray& ray, const SurfaceHit& hit, const SurfaceCoefficients* medium) const {
     ShadingPoint p;
     const Material& base = m_scene.materials[hit.material];
     // Which side the ray arrived on: seed 000 flips the normal for hits from inside (t1).
@@ -65,6 +76,7 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(const Ray& ray,
     p.facing_geometric = p.entering ? hit.geometric_normal : -hit.geometric_normal;
     p.normal = p.entering ? hit.shading_normal : -hit.shading_normal;
     p.base = &base;
+    p.medium = medium;
     // Procedural textures (seed 003 ch. 3): untextured materials skip this and are used as is.
     if (base.textures.any()) {
         p.textured = material_at(base, m_scene.textures, hit.position);
@@ -78,42 +90,122 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(const Ray& ray,
     return p;
 }
 
-bool WhittedIntegrator::light_sample(const ShadingPoint& p, const SurfaceHit& hit,
-                                     const Light& light, Ray& shadow, Vec3& to_light,
-                                     Vec3& light_radiance) const {
+Vec3 WhittedIntegrator::ambient_and_emission(const ShadingPoint& p) const {
+    const SurfaceCoefficients& m = p.material();
+    Vec3 color = m.ka * m_scene.ambient_light;
+    // An emitter is seen on its front, the side its geometric normal points to (the outside of
+    // closed shapes, a disk's normal, a polygon's winding).
+    if (m.emissive() && p.entering) color += m.emission;
+    return color;
+}
+
+glm::vec2 WhittedIntegrator::sample_u(const SurfaceHit& hit, size_t index, int s, int count) {
+    if (count == 1) return glm::vec2(0.5f);
+    return light_sample_u(hit.position, static_cast<uint32_t>(index), static_cast<uint32_t>(s),
+                          static_cast<uint32_t>(count));
+}
+
+WhittedIntegrator::LightSide WhittedIntegrator::light_sample(const ShadingPoint& p,
+                                                             const SurfaceHit& hit,
+                                                             const Light& light, const glm::vec2& u,
+                                                             Ray& shadow, Vec3& to_light,
+                                                             Vec3& light_radiance) const {
+    // Pure emitters skip the lights (other materials keep their shadow rays and counts as before).
+    if (p.material().emissive() && !p.material().lit()) return LightSide::None;
     LightSample sample;
-    if (!sample_light(light, hit.position, glm::vec2(0.5f), sample)) return false;
+    if (!sample_light(light, hit.position, u, sample)) return LightSide::None;
     to_light = sample.direction;
     const float light_distance = sample.distance;
     light_radiance = sample.radiance / sample.pdf;
-    // Lights behind the surface (as seen from the arriving side) contribute nothing.
+    const int count = light_sample_count(light);
+    if (count > 1) light_radiance /= static_cast<float>(count);
+    // Lights behind the surface (as seen from the arriving side) contribute nothing, unless the
+    // surface is translucent and the light is wholly behind it (both normals agree).
+    LightSide side = LightSide::Front;
     if (glm::dot(p.normal, to_light) <= 0.0f || glm::dot(p.facing_geometric, to_light) <= 0.0f) {
-        return false;
+        if (!p.material().translucent() || glm::dot(p.normal, to_light) >= 0.0f ||
+            glm::dot(p.facing_geometric, to_light) >= 0.0f) {
+            return LightSide::None;
+        }
+        side = LightSide::Back;
     }
-    shadow.origin = p.shadow_origin;
+    shadow.origin =
+        side == LightSide::Front ? p.shadow_origin : offset_ray_origin(hit, -p.facing_geometric);
     shadow.direction = to_light;
     shadow.tnear = 0.0f;
     // Stop just short of a point light so the light's own position is never "in the way".
-    shadow.tfar =
-        std::isfinite(light_distance)
-            ? glm::dot(hit.position - p.shadow_origin, to_light) + light_distance * (1.0f - 1e-5f)
-            : std::numeric_limits<float>::infinity();
-    return true;
+    shadow.tfar = std::isfinite(light_distance) ? glm::dot(hit.position - shadow.origin, to_light) +
+                                                      light_distance * (1.0f - 1e-5f)
+                                                : std::numeric_limits<float>::infinity();
+    if (sample.on_surface) {
+        // A point on an emitter that is in the scene: aim from the offset origin at the point
+        // itself (parallel to `to_light` the ray would meet the emitter's surface beside the
+        // point, short of tfar, once the offset is large) and stop just short of it.
+        const Vec3 offset = hit.position + light_distance * to_light - shadow.origin;
+        const float length = glm::length(offset);
+        shadow.direction = offset / length;
+        shadow.tfar = length * (1.0f - 1e-5f);
+    }
+    return side;
+}
+
+Vec3 WhittedIntegrator::direct(const ShadingPoint& p, LightSide side, const Vec3& to_light,
+                               const Vec3& light_radiance) {
+    if (side == LightSide::Front) {
+        return phong_direct(p.material(), p.normal, to_light, p.to_eye, light_radiance);
+    }
+    // seed 001: perfect diffuse transmission, by the cosine of the incidence angle on the far side.
+    return light_radiance * p.material().translucency * -glm::dot(p.normal, to_light);
+}
+
+Vec3 WhittedIntegrator::shadow_transmittance(Ray shadow, RayCounters& counters) const {
+    if (m_settings.shadows == ShadowMode::Opaque) {
+        return m_accel.occluded(shadow) ? Vec3(0.0f) : Vec3(1.0f);
+    }
+    // Filtered (POV-Ray's filtered shadows): closest-hit queries from each transmissive surface
+    // to the next, multiplying its transmit colour, until the light or an opaque surface.
+    Vec3 filter(1.0f);
+    for (int crossing = 0;; ++crossing) {
+        SurfaceHit hit;
+        if (!m_accel.intersect(shadow, hit)) return filter;
+        const Material& m = m_scene.materials[hit.material];
+        if (!m.transmissive() || crossing == kMaxShadowCrossings) return Vec3(0.0f);
+        filter *= m.transmit;
+        const bool leaving = glm::dot(shadow.direction, hit.geometric_normal) > 0.0f;
+        // Leaving an absorbing object: Beer–Lambert over the segment inside it (from the previous
+        // crossing, or from the shadow ray's origin).
+        if (leaving && m.absorbing()) filter *= beer_lambert(m.absorption, hit.t);
+        if (max_component(filter) <= 0.0f) return Vec3(0.0f);
+        ++counters.shadow_filtered;
+        const Vec3 origin =
+            offset_ray_origin(hit, leaving ? hit.geometric_normal : -hit.geometric_normal);
+        shadow.tfar -= glm::dot(origin - shadow.origin, shadow.direction);
+        shadow.origin = origin;
+        if (!(shadow.tfar > 0.0f)) return filter;
+    }
 }
 
 Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth, const Vec3& weight,
-                              RayCounters& counters) const {
-    const ShadingPoint p = prepare(ray, hit);
+                              RayCounters& counters, const SurfaceCoefficients* medium) const {
+    const ShadingPoint p = prepare(ray, hit, medium);
     // Local model, seed 003 eq. 2.1: I = ka·Ia + Σ f(d)·Il·[kd(n·l) + ks(…)^n], with a shadow ray
-    // per light (seed 004).
-    Vec3 color = p.material().ka * m_scene.ambient_light;
-    for (const Light& light : m_scene.lights) {
-        Ray shadow;
-        Vec3 to_light, light_radiance;
-        if (!light_sample(p, hit, light, shadow, to_light, light_radiance)) continue;
-        ++counters.shadow;
-        if (m_accel.occluded(shadow)) continue;
-        color += phong_direct(p.material(), p.normal, to_light, p.to_eye, light_radiance);
+    // per light (seed 004), or per point of an area light.
+    Vec3 color = ambient_and_emission(p);
+    for (size_t index = 0; index < m_scene.lights.size(); ++index) {
+        const Light& light = m_scene.lights[index];
+        const int count = light_sample_count(light);
+        for (int s = 0; s < count; ++s) {
+            Ray shadow;
+            Vec3 to_light, light_radiance;
+            const LightSide side = light_sample(p, hit, light, sample_u(hit, index, s, count),
+                                                shadow, to_light, light_radiance);
+            if (side == LightSide::None) continue;
+            ++counters.shadow;
+            const Vec3 filter = shadow_transmittance(shadow, counters);
+            if (filter == Vec3(0.0f)) continue;
+            const Vec3 light_color = direct(p, side, to_light, light_radiance);
+            color += filter == Vec3(1.0f) ? light_color : filter * light_color;
+        }
     }
     return add_transport(ray, hit, p, depth, weight, color, counters);
 }
@@ -131,25 +223,38 @@ Vec3 WhittedIntegrator::add_transport(const Ray& ray, const SurfaceHit& hit, con
     // seed 001: perfect specular reflection R = I − 2(I·N)N, and Snell transmission; total
     // internal reflection sends the transmitted weight into the reflected ray.
     Vec3 reflect_weight = material.reflect;
+    Vec3 transmit_weight = material.transmit;
+    const float n21 = p.entering ? material.ior : 1.0f / material.ior;
+    if (material.fresnel) {
+        // seed 000's W(θ) as the dielectric Fresnel reflectance F: reflect·F and
+        // transmit·(1 − F); F = 1 past the critical angle, so nothing is left to transmit.
+        const float f = fresnel_reflectance(-glm::dot(ray.direction, p.normal), n21);
+        reflect_weight *= f;
+        transmit_weight *= 1.0f - f;
+    }
     Vec3 transmit_color(0.0f);
-    if (material.transmissive()) {
-        const float n21 = p.entering ? material.ior : 1.0f / material.ior;
+    if (max_component(transmit_weight) > 0.0f) {
         const std::optional<Vec3> refracted = refract(ray.direction, p.normal, n21);
         if (refracted) {
-            const Vec3 child_weight = weight * material.transmit;
+            const Vec3 child_weight = weight * transmit_weight;
             if (max_component(child_weight) >= m_settings.min_contribution) {
                 Ray child;
                 child.origin = offset_ray_origin(hit, -p.facing_geometric);
                 child.direction = glm::normalize(*refracted);
                 ++counters.refraction;
+                // Entering an absorbing object, the child travels inside it (Beer–Lambert);
+                // leaving, or through a material that absorbs nothing (a thin pane, clear
+                // glass), it stays in the space between objects (the fog's).
+                const SurfaceCoefficients* inside =
+                    p.entering && p.base->absorbing() ? p.base : nullptr;
                 transmit_color =
-                    material.transmit * trace(child, depth + 1, child_weight, counters);
+                    transmit_weight * trace(child, depth + 1, child_weight, counters, inside);
             } else {
                 ++counters.contribution_cut;
             }
         } else {
             ++counters.total_internal_reflections;
-            reflect_weight += material.transmit;
+            reflect_weight += transmit_weight;
         }
     }
     Vec3 reflect_color(0.0f);
@@ -160,7 +265,8 @@ Vec3 WhittedIntegrator::add_transport(const Ray& ray, const SurfaceHit& hit, con
             child.origin = p.shadow_origin;
             child.direction = glm::normalize(reflect(ray.direction, p.normal));
             ++counters.reflection;
-            reflect_color = reflect_weight * trace(child, depth + 1, child_weight, counters);
+            reflect_color =
+                reflect_weight * trace(child, depth + 1, child_weight, counters, p.medium);
         } else {
             ++counters.contribution_cut;
         }
@@ -171,7 +277,8 @@ Vec3 WhittedIntegrator::add_transport(const Ray& ray, const SurfaceHit& hit, con
 void WhittedIntegrator::radiance_coherent(const Ray* rays, int count, Vec3* radiance,
                                           RayCounters& counters) const {
     // The same arithmetic as radiance() ray by ray, reordered so that each stage's rays go to
-    // Embree together: camera rays, then the shadow rays toward each light in turn.
+    // Embree together: camera rays, then the shadow rays toward each light (each point of an
+    // area light) in turn.
     constexpr int kBatch = Accel::kCoherentBatch;
     SurfaceHit hits[kBatch];
     bool found[kBatch];
@@ -179,6 +286,7 @@ void WhittedIntegrator::radiance_coherent(const Ray* rays, int count, Vec3* radi
     Vec3 color[kBatch];
     Ray shadows[kBatch];
     Vec3 to_lights[kBatch], light_radiances[kBatch];
+    LightSide sides[kBatch];
     int shadow_pixel[kBatch];
     bool occluded[kBatch];
     for (int first = 0; first < count; first += kBatch) {
@@ -188,34 +296,48 @@ void WhittedIntegrator::radiance_coherent(const Ray* rays, int count, Vec3* radi
         m_accel.intersect_coherent(batch, n, hits, found);
         for (int i = 0; i < n; ++i) {
             if (!found[i]) continue;
-            points[i] = prepare(batch[i], hits[i]);
-            color[i] = points[i].material().ka * m_scene.ambient_light;
+            points[i] = prepare(batch[i], hits[i], nullptr);
+            color[i] = ambient_and_emission(points[i]);
         }
-        for (const Light& light : m_scene.lights) {
-            int shadow_count = 0;
-            for (int i = 0; i < n; ++i) {
-                if (!found[i]) continue;
-                const int k = shadow_count;
-                if (!light_sample(points[i], hits[i], light, shadows[k], to_lights[k],
-                                  light_radiances[k])) {
-                    continue;
+        for (size_t index = 0; index < m_scene.lights.size(); ++index) {
+            const Light& light = m_scene.lights[index];
+            const int samples = light_sample_count(light);
+            for (int s = 0; s < samples; ++s) {
+                int shadow_count = 0;
+                for (int i = 0; i < n; ++i) {
+                    if (!found[i]) continue;
+                    const int k = shadow_count;
+                    sides[k] = light_sample(points[i], hits[i], light,
+                                            sample_u(hits[i], index, s, samples), shadows[k],
+                                            to_lights[k], light_radiances[k]);
+                    if (sides[k] == LightSide::None) continue;
+                    shadow_pixel[k] = i;
+                    ++shadow_count;
                 }
-                shadow_pixel[k] = i;
-                ++shadow_count;
-            }
-            counters.shadow += static_cast<uint64_t>(shadow_count);
-            m_accel.occluded_coherent(shadows, shadow_count, occluded);
-            for (int k = 0; k < shadow_count; ++k) {
-                if (occluded[k]) continue;
-                const ShadingPoint& p = points[shadow_pixel[k]];
-                color[shadow_pixel[k]] += phong_direct(p.material(), p.normal, to_lights[k],
-                                                       p.to_eye, light_radiances[k]);
+                counters.shadow += static_cast<uint64_t>(shadow_count);
+                if (m_settings.shadows == ShadowMode::Opaque) {
+                    m_accel.occluded_coherent(shadows, shadow_count, occluded);
+                }
+                for (int k = 0; k < shadow_count; ++k) {
+                    // Filtered shadows continue past surfaces ray by ray (shadow_transmittance).
+                    const Vec3 filter = m_settings.shadows == ShadowMode::Opaque
+                                            ? Vec3(occluded[k] ? 0.0f : 1.0f)
+                                            : shadow_transmittance(shadows[k], counters);
+                    if (filter == Vec3(0.0f)) continue;
+                    const Vec3 light_color =
+                        direct(points[shadow_pixel[k]], sides[k], to_lights[k], light_radiances[k]);
+                    color[shadow_pixel[k]] +=
+                        filter == Vec3(1.0f) ? light_color : filter * light_color;
+                }
             }
         }
         for (int i = 0; i < n; ++i) {
-            radiance[first + i] = found[i] ? add_transport(batch[i], hits[i], points[i], 0,
-                                                           Vec3(1.0f), color[i], counters)
-                                           : m_scene.background;
+            radiance[first + i] =
+                found[i] ? through_medium(add_transport(batch[i], hits[i], points[i], 0, Vec3(1.0f),
+                                                        color[i], counters),
+                                          hits[i].t, nullptr)
+                : m_scene.fog.enabled() ? m_scene.fog.color
+                                        : m_scene.background;
         }
     }
 }

@@ -10,9 +10,17 @@
 
 namespace rayo {
 
+// How shadow rays treat transmissive surfaces: Opaque stops at any surface; Filtered passes
+// surfaces with a `transmit` colour, tinted by it at each crossing (POV-Ray's filtered shadows).
+enum class ShadowMode { Opaque, Filtered };
+
+// A filtered shadow ray crosses at most this many transmissive surfaces; one more is occlusion.
+constexpr int kMaxShadowCrossings = 16;
+
 struct WhittedSettings {
     int max_depth = 5;               // camera ray = depth 0; no child rays beyond this depth
     float min_contribution = 1e-3f;  // children whose weight falls below this are not traced
+    ShadowMode shadows = ShadowMode::Opaque;
 };
 
 class WhittedIntegrator {
@@ -34,21 +42,45 @@ class WhittedIntegrator {
         std::optional<SurfaceCoefficients> textured;  // its coefficients at the hit, if textured
         bool entering = true;
         Vec3 facing_geometric{0.0f}, normal{0.0f}, to_eye{0.0f}, shadow_origin{0.0f};
+        // The medium the arriving ray travelled through: the absorbing material whose inside it
+        // crossed, or null for the space between objects (the fog's).
+        const SurfaceCoefficients* medium = nullptr;
         // Not a stored pointer to `textured`: points are copied and must stay valid.
         const SurfaceCoefficients& material() const { return textured ? *textured : *base; }
     };
-    ShadingPoint prepare(const Ray& ray, const SurfaceHit& hit) const;
-    // The shadow ray toward `light`, the unit direction to it and its radiance at the hit;
-    // false when the light is behind the surface.
-    bool light_sample(const ShadingPoint& p, const SurfaceHit& hit, const Light& light, Ray& shadow,
-                      Vec3& to_light, Vec3& light_radiance) const;
+    ShadingPoint prepare(const Ray& ray, const SurfaceHit& hit,
+                         const SurfaceCoefficients* medium) const;
+    // Which side of the surface a light sample lies on: the side the ray arrived on (the local
+    // model), the far side of a translucent surface (diffuse transmission), or neither.
+    enum class LightSide { None, Front, Back };
+    // Sample u of `light`: the shadow ray toward it, the unit direction to it and its radiance
+    // at the hit divided by the pdf and by the light's sample count.
+    LightSide light_sample(const ShadingPoint& p, const SurfaceHit& hit, const Light& light,
+                           const glm::vec2& u, Ray& shadow, Vec3& to_light,
+                           Vec3& light_radiance) const;
+    // The u of sample s of light `index` at the hit (light_sample_u; the centre for one sample).
+    static glm::vec2 sample_u(const SurfaceHit& hit, size_t index, int s, int count);
+    // The light the shading point reflects (Front: Phong) or transmits (Back: seed 001's
+    // perfect diffuse transmission, translucency·(−N·L)) from one light sample.
+    static Vec3 direct(const ShadingPoint& p, LightSide side, const Vec3& to_light,
+                       const Vec3& light_radiance);
+    // The fraction of light that reaches the end of `shadow`: 0 or 1 with opaque shadows; with
+    // filtered shadows the product of the transmit colours of the surfaces it crosses (and the
+    // Beer–Lambert absorption inside them), 0 at an opaque surface or past kMaxShadowCrossings.
+    Vec3 shadow_transmittance(Ray shadow, RayCounters& counters) const;
+    // The radiance `radiance` of the point at distance `t` along a ray through `medium` as it
+    // arrives: Beer–Lambert inside an absorbing material, the fog between objects (seed 004).
+    Vec3 through_medium(const Vec3& radiance, float t, const SurfaceCoefficients* medium) const;
     // `color` (the local model) plus the reflected and refracted children (seed 001).
     Vec3 add_transport(const Ray& ray, const SurfaceHit& hit, const ShadingPoint& p, int depth,
                        const Vec3& weight, const Vec3& color, RayCounters& counters) const;
 
-    Vec3 trace(const Ray& ray, int depth, const Vec3& weight, RayCounters& counters) const;
+    Vec3 trace(const Ray& ray, int depth, const Vec3& weight, RayCounters& counters,
+               const SurfaceCoefficients* medium) const;
     Vec3 shade(const Ray& ray, const SurfaceHit& hit, int depth, const Vec3& weight,
-               RayCounters& counters) const;
+               RayCounters& counters, const SurfaceCoefficients* medium) const;
+    // ka·Ia plus the emission the ray sees (the front side of an emissive surface).
+    Vec3 ambient_and_emission(const ShadingPoint& p) const;
 
     const Accel& m_accel;
     const ShadingScene& m_scene;

@@ -357,6 +357,7 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "  time write                  " << format_duration(write_s) << "\n"
         << "  rays camera                 " << c.camera << "\n"
         << "  rays shadow                 " << c.shadow << "\n"
+        << "  rays shadow, filtered       " << c.shadow_filtered << "\n"
         << "  rays reflection             " << c.reflection << "\n"
         << "  rays refraction             " << c.refraction << "\n"
         << "  rays total                  " << c.total_rays() << "\n"

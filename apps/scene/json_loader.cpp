@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "apps/scene/area_light_emitters.h"
 #include "apps/scene/input_file.h"
 #include "apps/scene/mesh_loader.h"
 #include "core/error.h"
@@ -27,6 +28,9 @@ constexpr int kFormatVersion = 1;
 // real scene (the deepest rayo format path is about 6 levels), and far below what would exhaust
 // the stack of anything that walks the tree recursively.
 constexpr int kMaxJsonDepth = 256;
+
+// Most points an area light may be sampled at per shading point (each is a shadow ray).
+constexpr int kMaxAreaLightSamples = 4096;
 
 // ---- JSON syntax errors -> "file:line:column" ---------------------------------------------
 
@@ -444,6 +448,8 @@ class SceneParser {
     Material parse_material(const Json& value, const std::string& pointer,
                             const std::string& name) const;
     Light parse_light(const Json& value, const std::string& pointer) const;
+    AreaLight parse_area_light(const Json& value, const std::string& pointer) const;
+    Fog parse_fog(const Json& value, const std::string& pointer) const;
     Attenuation parse_attenuation(const Json& value, const std::string& pointer) const;
     void parse_object(const Json& value, const std::string& pointer, SceneDescription& out,
                       TriangleMesh& polygons);
@@ -466,8 +472,8 @@ SceneDescription SceneParser::parse(const Json& root) {
         fail("/rayo", "unsupported format version: expected 1, got " + describe(version));
     }
     check_keys(root, "",
-               {"rayo", "camera", "render", "background", "ambient_light", "textures", "materials",
-                "lights", "objects"});
+               {"rayo", "camera", "render", "background", "ambient_light", "fog", "textures",
+                "materials", "lights", "objects"});
 
     SceneDescription out;
     out.source = m_source;
@@ -487,6 +493,7 @@ SceneDescription SceneParser::parse(const Json& root) {
     if (const Json* value = find(root, "render")) parse_render(*value, "/render", out.settings);
     out.shading.background = colour_or(root, "", "background", Vec3(0.0f));
     out.shading.ambient_light = colour_or(root, "", "ambient_light", Vec3(1.0f));
+    if (const Json* value = find(root, "fog")) out.shading.fog = parse_fog(*value, "/fog");
 
     // Textures first: materials refer to them by name.
     if (const Json* value = find(root, "textures")) {
@@ -513,6 +520,8 @@ SceneDescription SceneParser::parse(const Json& root) {
         }
     }
     if (!polygons.triangles.empty()) out.scene.meshes.push_back(std::move(polygons));
+    // After every object: the emitters' materials follow the file's and the meshes' materials.
+    add_area_light_emitters(out);
     return out;
 }
 
@@ -589,7 +598,13 @@ void SceneParser::parse_render(const Json& value, const std::string& pointer,
     require_object(value, pointer, "a render settings object");
     check_keys(value, pointer,
                {"spp", "max_depth", "min_contribution", "tile_size", "sphere_math", "sphere_method",
-                "aa", "aa_threshold", "aa_depth"});
+                "aa", "aa_threshold", "aa_depth", "shadows"});
+    if (const Json* v = find(value, "shadows")) {
+        s.whitted.shadows =
+            choice(*v, child(pointer, "shadows"), {"opaque", "filtered"}) == "filtered"
+                ? ShadowMode::Filtered
+                : ShadowMode::Opaque;
+    }
     if (const Json* v = find(value, "spp")) s.spp = integer(*v, child(pointer, "spp"), 1, 1 << 20);
     if (const Json* v = find(value, "max_depth")) {
         s.whitted.max_depth = integer(*v, child(pointer, "max_depth"), 0, 64);
@@ -785,7 +800,8 @@ Material SceneParser::parse_material(const Json& value, const std::string& point
                                      const std::string& name) const {
     require_object(value, pointer, "a material object");
     check_keys(value, pointer,
-               {"ka", "kd", "ks", "shininess", "specular", "reflect", "transmit", "ior", "bump"});
+               {"ka", "kd", "ks", "shininess", "specular", "reflect", "transmit", "ior", "fresnel",
+                "translucency", "absorption", "emission", "bump"});
     Material m;
     m.name = name;
     // Each of kd, ka, ks is a colour or the name of a texture (seed 003 ch. 3).
@@ -823,6 +839,17 @@ Material SceneParser::parse_material(const Json& value, const std::string& point
     m.reflect = colour_or(value, pointer, "reflect", Vec3(0.0f));    // seed 001 reflection
     m.transmit = colour_or(value, pointer, "transmit", Vec3(0.0f));  // seed 001 transmission
     m.ior = real_or(value, pointer, "ior", 1.0f, Bound::Positive);   // seed 001 Snell n21
+    if (const Json* v = find(value, "fresnel")) {  // seed 000's W(θ): Fresnel weights
+        if (!v->is_boolean()) {
+            fail(child(pointer, "fresnel"), "expected true or false, got " + describe(*v));
+        }
+        m.fresnel = v->get<bool>();
+        // The Fresnel reflection of a dielectric is untinted: reflect defaults to 1.
+        if (m.fresnel && !find(value, "reflect")) m.reflect = Vec3(1.0f);
+    }
+    m.translucency = colour_or(value, pointer, "translucency", Vec3(0.0f));  // seed 001
+    m.absorption = colour_or(value, pointer, "absorption", Vec3(0.0f));      // Beer–Lambert
+    m.emission = colour_or(value, pointer, "emission", Vec3(0.0f));
     return m;
 }
 
@@ -853,8 +880,10 @@ Attenuation SceneParser::parse_attenuation(const Json& value, const std::string&
 
 Light SceneParser::parse_light(const Json& value, const std::string& pointer) const {
     require_object(value, pointer, "a light object");
-    const std::string type = choice(require(value, pointer, "type", "\"point\" or \"directional\""),
-                                    child(pointer, "type"), {"point", "directional"});
+    const std::string type =
+        choice(require(value, pointer, "type", "\"point\", \"directional\" or \"area\""),
+               child(pointer, "type"), {"point", "directional", "area"});
+    if (type == "area") return parse_area_light(value, pointer);
     if (type == "point") {
         check_keys(value, pointer, {"type", "position", "color", "intensity", "attenuation"});
         PointLight light;
@@ -874,6 +903,62 @@ Light SceneParser::parse_light(const Json& value, const std::string& pointer) co
     light.color = colour_or(value, pointer, "color", Vec3(1.0f));
     light.intensity = real_or(value, pointer, "intensity", 1.0f, Bound::NonNegative);
     return light;
+}
+
+AreaLight SceneParser::parse_area_light(const Json& value, const std::string& pointer) const {
+    AreaLight light;
+    const std::string shape =
+        choice(require(value, pointer, "shape", "\"rectangle\", \"disk\" or \"sphere\""),
+               child(pointer, "shape"), {"rectangle", "disk", "sphere"});
+    const std::vector<std::string> common = {"type", "shape", "samples", "color", "intensity"};
+    auto keys = [&](std::initializer_list<const char*> own) {
+        std::vector<std::string> allowed = common;
+        allowed.insert(allowed.end(), own.begin(), own.end());
+        check_keys(value, pointer, allowed);
+    };
+    if (shape == "rectangle") {
+        keys({"corner", "edge1", "edge2"});
+        light.shape = AreaLight::Shape::Rectangle;
+        light.corner =
+            vec3(require(value, pointer, "corner", "[x, y, z]"), child(pointer, "corner"));
+        light.edge1 = vec3(require(value, pointer, "edge1", "[x, y, z]"), child(pointer, "edge1"));
+        light.edge2 = vec3(require(value, pointer, "edge2", "[x, y, z]"), child(pointer, "edge2"));
+        const float area = glm::length(glm::cross(light.edge1, light.edge2));
+        if (!(area > 0.0f) || !std::isfinite(area)) {
+            fail(child(pointer, "edge2"),
+                 "expected edge1 and edge2 to span a rectangle of non-zero area (not parallel, "
+                 "neither zero)");
+        }
+    } else {
+        light.shape = shape == "disk" ? AreaLight::Shape::Disk : AreaLight::Shape::Sphere;
+        if (shape == "disk") {
+            keys({"center", "normal", "radius"});
+            light.normal = direction(require(value, pointer, "normal", "[x, y, z], non-zero"),
+                                     child(pointer, "normal"));
+        } else {
+            keys({"center", "radius"});
+        }
+        light.center =
+            vec3(require(value, pointer, "center", "[x, y, z]"), child(pointer, "center"));
+        light.radius = real(require(value, pointer, "radius", "a number > 0"),
+                            child(pointer, "radius"), Bound::Positive);
+    }
+    if (const Json* v = find(value, "samples")) {
+        light.samples = integer(*v, child(pointer, "samples"), 1, kMaxAreaLightSamples);
+    }
+    light.color = colour_or(value, pointer, "color", Vec3(1.0f));
+    light.intensity = real_or(value, pointer, "intensity", 1.0f, Bound::NonNegative);
+    return light;
+}
+
+Fog SceneParser::parse_fog(const Json& value, const std::string& pointer) const {
+    require_object(value, pointer, "a fog object {\"color\": colour, \"density\": number}");
+    check_keys(value, pointer, {"color", "density"});
+    Fog fog;
+    fog.color = colour_or(value, pointer, "color", Vec3(0.5f));
+    fog.density = real(require(value, pointer, "density", "a number >= 0"),
+                       child(pointer, "density"), Bound::NonNegative);
+    return fog;
 }
 
 uint32_t SceneParser::material_of(const Json& object, const std::string& pointer) const {

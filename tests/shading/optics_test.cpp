@@ -117,3 +117,65 @@ TEST(Optics, CriticalAngle) {
 
 }  // namespace
 }  // namespace rayo
+
+namespace rayo {
+namespace {
+
+// The Fresnel transmittance from the amplitude transmission coefficients (Hecht, Optics §4.6):
+// ts = 2 n1 cos θi/(n1 cos θi + n2 cos θt), tp = 2 n1 cos θi/(n2 cos θi + n1 cos θt),
+// T = (n2 cos θt)/(n1 cos θi)·(ts² + tp²)/2. Independent of fresnel_reflectance's formula.
+double fresnel_transmittance(double degrees, double n1, double n2) {
+    const double cos_i = std::cos(degrees * kDegree);
+    const double sin_t = n1 / n2 * std::sin(degrees * kDegree);
+    if (sin_t >= 1.0) return 0.0;
+    const double cos_t = std::sqrt(1.0 - sin_t * sin_t);
+    const double ts = 2.0 * n1 * cos_i / (n1 * cos_i + n2 * cos_t);
+    const double tp = 2.0 * n1 * cos_i / (n2 * cos_i + n1 * cos_t);
+    return n2 * cos_t / (n1 * cos_i) * 0.5 * (ts * ts + tp * tp);
+}
+
+float reflectance_at(double degrees, float n21) {
+    return fresnel_reflectance(static_cast<float>(std::cos(degrees * kDegree)), n21);
+}
+
+TEST(Fresnel, NormalIncidenceOnGlassReflectsFourPercent) {
+    // ((n − 1)/(n + 1))² = (0.5/2.5)² = 0.04, from either side.
+    EXPECT_NEAR(fresnel_reflectance(1.0f, 1.5f), 0.04f, 1e-6f);
+    EXPECT_NEAR(fresnel_reflectance(1.0f, 1.0f / 1.5f), 0.04f, 1e-6f);
+    EXPECT_NEAR(fresnel_reflectance(1.0f, 1.33f), std::pow(0.33f / 2.33f, 2.0f), 1e-6f);  // water
+}
+
+TEST(Fresnel, TotalBeyondTheCriticalAngle) {
+    const float n21 = 1.0f / 1.5f;                           // glass to air
+    const double critical = std::asin(1.0 / 1.5) / kDegree;  // 41.81°
+    for (double d : {critical + 0.01, 50.0, 70.0, 89.9}) {
+        EXPECT_EQ(reflectance_at(d, n21), 1.0f) << d << " degrees";
+    }
+    EXPECT_LT(reflectance_at(critical - 0.5, n21), 1.0f);
+    EXPECT_GT(reflectance_at(critical - 0.5, n21), 0.2f);  // rises steeply toward it
+}
+
+TEST(Fresnel, ReflectancePlusTransmittanceIsOne) {
+    for (double n : {1.33, 1.5, 2.4}) {
+        for (double d = 0.0; d < 90.0; d += 7.5) {
+            const double r_in = reflectance_at(d, static_cast<float>(n));
+            EXPECT_NEAR(r_in + fresnel_transmittance(d, 1.0, n), 1.0, 2e-6) << n << " " << d;
+            const double r_out = reflectance_at(d, static_cast<float>(1.0 / n));
+            EXPECT_NEAR(r_out + fresnel_transmittance(d, n, 1.0), 1.0, 2e-6) << n << " " << d;
+        }
+    }
+}
+
+TEST(Fresnel, BrewsterAngleReflectsOnlyTheSPolarization) {
+    // At tan θB = n the p amplitude vanishes and rs = −(n² − 1)/(n² + 1): R = rs²/2.
+    const double n = 1.5;
+    const double brewster = std::atan(n) / kDegree;
+    const double rs = (n * n - 1.0) / (n * n + 1.0);
+    EXPECT_NEAR(reflectance_at(brewster, 1.5f), 0.5 * rs * rs, 1e-6);
+    // Grazing incidence reflects everything; the reflectance rises monotonically toward it.
+    EXPECT_NEAR(reflectance_at(90.0, 1.5f), 1.0f, 1e-6f);
+    EXPECT_LT(reflectance_at(60.0, 1.5f), reflectance_at(80.0, 1.5f));
+}
+
+}  // namespace
+}  // namespace rayo

@@ -1,0 +1,107 @@
+#include "shading/area_light.h"
+
+#include <cmath>
+
+namespace rayo {
+namespace {
+
+// Two unit vectors completing the unit `w` to an orthonormal basis (Duff et al. 2017,
+// "Building an orthonormal basis, revisited").
+void basis(const Vec3& w, Vec3& t, Vec3& b) {
+    const float sign = std::copysign(1.0f, w.z);
+    const float a = -1.0f / (sign + w.z);
+    const float c = w.x * w.y * a;
+    t = Vec3(1.0f + sign * w.x * w.x * a, sign * c, -sign * w.x);
+    b = Vec3(c, sign + w.y * w.y * a, -w.y);
+}
+
+// The unit square onto the unit disk keeping strata compact (Shirley and Chiu 1997, concentric
+// mapping).
+glm::vec2 concentric_disk(const glm::vec2& u) {
+    const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f;
+    if (a == 0.0f && b == 0.0f) return glm::vec2(0.0f);
+    float r, phi;
+    if (std::abs(a) > std::abs(b)) {
+        r = a;
+        phi = (kPi / 4.0f) * (b / a);
+    } else {
+        r = b;
+        phi = (kPi / 2.0f) - (kPi / 4.0f) * (a / b);
+    }
+    return glm::vec2(r * std::cos(phi), r * std::sin(phi));
+}
+
+// A point `target` of a flat emitter of area `area` and unit normal `normal` seen from `point`:
+// the solid-angle pdf of uniform area sampling is d²/(A·cos θl), θl the angle at the light.
+bool flat_sample(const Vec3& point, const Vec3& target, const Vec3& normal, float area,
+                 const Vec3& radiance, LightSample& out) {
+    const Vec3 offset = target - point;
+    const float distance = glm::length(offset);
+    if (!(distance > 0.0f)) return false;
+    out.direction = offset / distance;
+    const float cos_light = -glm::dot(normal, out.direction);
+    if (!(cos_light > 0.0f)) return false;  // the back of a one-sided emitter
+    out.distance = distance;
+    out.radiance = radiance;
+    out.pdf = distance * distance / (area * cos_light);
+    out.on_surface = true;
+    return true;
+}
+
+}  // namespace
+
+float AreaLight::area() const {
+    switch (shape) {
+        case Shape::Rectangle:
+            return glm::length(glm::cross(edge1, edge2));
+        case Shape::Disk:
+            return kPi * radius * radius;
+        case Shape::Sphere:
+            break;
+    }
+    return 4.0f * kPi * radius * radius;
+}
+
+bool AreaLight::sample(const Vec3& point, const glm::vec2& u, LightSample& out) const {
+    switch (shape) {
+        case Shape::Rectangle:
+            return flat_sample(point, corner + u.x * edge1 + u.y * edge2,
+                               glm::normalize(glm::cross(edge1, edge2)), area(), radiance(), out);
+        case Shape::Disk: {
+            Vec3 t, b;
+            basis(normal, t, b);
+            const glm::vec2 d = radius * concentric_disk(u);
+            return flat_sample(point, center + d.x * t + d.y * b, normal, area(), radiance(), out);
+        }
+        case Shape::Sphere:
+            break;
+    }
+    // Sphere: uniform over the cone toward it, half-angle θmax with sin θmax = r/dc (the visible
+    // cap only, no sample wasted on the far side); pdf = 1/(2π(1 − cos θmax)).
+    const Vec3 to_center = center - point;
+    const float dc = glm::length(to_center);
+    if (!(dc > radius)) return false;
+    const float sin2_max = (radius / dc) * (radius / dc);
+    // 1 − cos θmax = 1 − √(1 − s²) = s²/(1 + √(1 − s²)): no cancellation for small lights.
+    const float one_minus_cos_max = sin2_max / (1.0f + std::sqrt(1.0f - sin2_max));
+    const float cos_theta = 1.0f - u.x * one_minus_cos_max;
+    const float sin_theta = std::sqrt(glm::max(0.0f, 1.0f - cos_theta * cos_theta));
+    const float phi = 2.0f * kPi * u.y;
+    const Vec3 w = to_center / dc;
+    Vec3 t, b;
+    basis(w, t, b);
+    out.direction =
+        glm::normalize(cos_theta * w + sin_theta * (std::cos(phi) * t + std::sin(phi) * b));
+    // The nearer crossing of the sphere along the direction (b = d·(c − p) > 0 inside the cone).
+    const float along = glm::dot(out.direction, to_center);
+    const Vec3 perpendicular = to_center - along * out.direction;
+    const float half_chord2 =
+        glm::max(0.0f, radius * radius - glm::dot(perpendicular, perpendicular));
+    out.distance = along - std::sqrt(half_chord2);
+    out.radiance = radiance();
+    out.pdf = 1.0f / (2.0f * kPi * one_minus_cos_max);
+    out.on_surface = true;
+    return true;
+}
+
+}  // namespace rayo
