@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/sampling.h"
+
 namespace rayo {
 namespace {
 
@@ -13,22 +15,6 @@ void basis(const Vec3& w, Vec3& t, Vec3& b) {
     const float c = w.x * w.y * a;
     t = Vec3(1.0f + sign * w.x * w.x * a, sign * c, -sign * w.x);
     b = Vec3(c, sign + w.y * w.y * a, -w.y);
-}
-
-// The unit square onto the unit disk keeping strata compact (Shirley and Chiu 1997, concentric
-// mapping).
-glm::vec2 concentric_disk(const glm::vec2& u) {
-    const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f;
-    if (a == 0.0f && b == 0.0f) return glm::vec2(0.0f);
-    float r, phi;
-    if (std::abs(a) > std::abs(b)) {
-        r = a;
-        phi = (kPi / 4.0f) * (b / a);
-    } else {
-        r = b;
-        phi = (kPi / 2.0f) - (kPi / 4.0f) * (a / b);
-    }
-    return glm::vec2(r * std::cos(phi), r * std::sin(phi));
 }
 
 // A point `target` of a flat emitter of area `area` and unit normal `normal` seen from `point`:
