@@ -31,7 +31,7 @@ fuzz_one() {
   if [[ "$r" == json ]]; then max_len=262144; fi
   echo "fuzz/run.sh: $r for ${seconds} s (max_len ${max_len}), log in $work/log"
   if ! nice -n "${RAYO_FUZZ_NICE:-0}" "$root/build-asan/${r}_fuzz" -max_total_time="$seconds" \
-      -timeout=10 -rss_limit_mb=2048 -max_len="$max_len" -print_final_stats=1 \
+      -timeout="${RAYO_FUZZ_TIMEOUT:-10}" -rss_limit_mb=2048 -max_len="$max_len" -print_final_stats=1 \
       -artifact_prefix="$work/artifacts/" "${dict[@]}" "$work/corpus" "$root/fuzz/corpus/$r" \
       >"$work/log" 2>&1; then
     echo "fuzz/run.sh: $r found a problem; see $work/artifacts/ and $work/log" >&2
@@ -41,6 +41,8 @@ fuzz_one() {
 }
 
 # RAYO_FUZZ_PARALLEL=1 runs the readers at the same time (each gets a share of the cores).
+# libFuzzer's -timeout is wall-clock time: on a machine busy with other work, raise it
+# (RAYO_FUZZ_TIMEOUT=120), or starved inputs that take 20 ms are reported as 10-second hangs.
 status=0
 if [[ "${RAYO_FUZZ_PARALLEL:-0}" == 1 ]]; then
   pids=()
