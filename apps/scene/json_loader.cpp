@@ -414,18 +414,18 @@ class SceneParser {
         void read(const Json& value, const std::string& where, std::array<float, N>& member,
                   FieldKind) {
             if (!value.is_array() || value.size() != N) {
-                parser.fail(where, "expected an array of " + std::to_string(N) +
-                                       " numbers, got " + describe(value));
+                parser.fail(where, "expected an array of " + std::to_string(N) + " numbers, got " +
+                                       describe(value));
             }
             for (size_t i = 0; i < N; ++i) member[i] = parser.real(value[i], child(where, i));
         }
         void read(const Json& value, const std::string& where, Bounds3& member, FieldKind kind) {
             parser.require_object(value, where, expected(kind));
             parser.check_keys(value, where, {"min", "max"});
-            member.lower = parser.vec3(parser.require(value, where, "min", "[x, y, z]"),
-                                       child(where, "min"));
-            member.upper = parser.vec3(parser.require(value, where, "max", "[x, y, z]"),
-                                       child(where, "max"));
+            member.lower =
+                parser.vec3(parser.require(value, where, "min", "[x, y, z]"), child(where, "min"));
+            member.upper =
+                parser.vec3(parser.require(value, where, "max", "[x, y, z]"), child(where, "max"));
         }
         template <typename T>
         void operator()(const char* name, T& member, FieldKind kind) {

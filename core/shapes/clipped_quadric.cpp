@@ -171,8 +171,8 @@ void ClippedQuadric::parameterization(const Vec3& position, SurfaceHit& out) con
 
 void ClippedQuadric::add_box_edges(Outline& out) const {
     const auto corner = [&](int k) {
-        return to_world(DVec3(k & 1 ? upper.x : lower.x, k & 2 ? upper.y : lower.y,
-                              k & 4 ? upper.z : lower.z));
+        return to_world(
+            DVec3(k & 1 ? upper.x : lower.x, k & 2 ? upper.y : lower.y, k & 4 ? upper.z : lower.z));
     };
     for (int k = 0; k < 8; ++k) {
         for (int bit = 1; bit < 8; bit <<= 1) {

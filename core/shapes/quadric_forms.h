@@ -36,7 +36,7 @@ struct Ellipsoid : QuadricShape<Ellipsoid> {
 };
 
 struct Cylinder : QuadricShape<Cylinder> {
-    Vec3 base{0.0f};  // centre of the bottom cap
+    Vec3 base{0.0f};             // centre of the bottom cap
     Vec3 top{0.0f, 1.0f, 0.0f};  // centre of the top cap
     float radius = 1.0f;
     bool capped = true;

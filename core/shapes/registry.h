@@ -12,8 +12,8 @@
 
 namespace rayo {
 
-using AnalyticShapes = ShapeList<Sphere, Cone, Disk, Box, Quadric, Ellipsoid, Cylinder, Paraboloid,
-                                 Hyperboloid>;
+using AnalyticShapes =
+    ShapeList<Sphere, Cone, Disk, Box, Quadric, Ellipsoid, Cylinder, Paraboloid, Hyperboloid>;
 using Shapes = ShapeSet<AnalyticShapes>;
 
 }  // namespace rayo

@@ -26,7 +26,9 @@ Quadric unit_sphere_quadric(const Vec3& lower = Vec3(-2.0f), const Vec3& upper =
     return q;
 }
 
-Vec3 unit(const Vec3& v) { return glm::normalize(v); }
+Vec3 unit(const Vec3& v) {
+    return glm::normalize(v);
+}
 
 void expect_direction(const Vec3& actual, const Vec3& expected, float tolerance = 1e-5f) {
     const Vec3 a = unit(actual), e = unit(expected);

@@ -70,12 +70,12 @@ TEST(QuadricScene, ErrorsNameTheJsonPointer) {
     const std::string sphere = R"("coefficients": [1, 1, 1, 0, 0, 0, 0, 0, 0, -1])";
     expect_error(R"({"type": "quadric", )" + sphere + "}",
                  "s.json#/objects/0/bounds: missing required field \"bounds\"");
-    expect_error(R"({"type": "quadric", )" + sphere +
-                     R"(, "bounds": {"min": [0, 0, 0], "max": [1, 0, 1]}})",
-                 "s.json#/objects/0/bounds/max: expected max > min on every axis");
-    expect_error(R"({"type": "quadric", )" + sphere +
-                     R"(, "bounds": {"min": [2, 2, 2], "max": [1, 1, 1]}})",
-                 "s.json#/objects/0/bounds/max: expected max > min on every axis");
+    expect_error(
+        R"({"type": "quadric", )" + sphere + R"(, "bounds": {"min": [0, 0, 0], "max": [1, 0, 1]}})",
+        "s.json#/objects/0/bounds/max: expected max > min on every axis");
+    expect_error(
+        R"({"type": "quadric", )" + sphere + R"(, "bounds": {"min": [2, 2, 2], "max": [1, 1, 1]}})",
+        "s.json#/objects/0/bounds/max: expected max > min on every axis");
     expect_error(R"({"type": "quadric", )" + sphere + R"(, "bounds": {"min": [0, 0, 0]}})",
                  "s.json#/objects/0/bounds/max: missing required field \"max\"");
     expect_error(R"({"type": "quadric", )" + sphere + R"(, "bounds": [0, 1]})",
