@@ -149,6 +149,39 @@ TEST(Quadric, FarOriginsKeepTheRelativeError) {
     EXPECT_NEAR(hit.t, 1e5f - 1.0f, 1e5f * 2e-7f);
 }
 
+TEST(Quadric, SmallSphereFarAwayAgreesWithALongDoubleReference) {
+    // A sphere of radius 1e-3 seen from 1e5 away (1e8 radii): about the ray's origin,
+    // b² − 4ac would cancel |o|² ≈ 1e10 against itself and lose the 1e-6 that decides hit or
+    // miss even in double; about the box's middle nothing cancels. The reference solves the same
+    // float ray and float coefficients in long double.
+    Quadric q;
+    q.coefficients = {1, 1, 1, 0, 0, 0, 0, 0, 0, -1e-6f};
+    q.clip = {Vec3(-2e-3f), Vec3(2e-3f)};
+    const long double r2 = -static_cast<long double>(q.coefficients[9]);
+    const long double r = std::sqrt(r2);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    int wrong = 0, hits = 0, counted = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3 o = 1e5f * unit(Vec3(u(rng), u(rng), u(rng)));
+        const Vec3 target = 1.25e-3f * Vec3(u(rng), u(rng), u(rng));
+        const Vec3 d = unit(target - o);
+        // Perpendicular distance of the float line from the centre: |o × d| / |d|.
+        const long double ox = o.x, oy = o.y, oz = o.z, dx = d.x, dy = d.y, dz = d.z;
+        const long double cx = oy * dz - oz * dy, cy = oz * dx - ox * dz, cz = ox * dy - oy * dx;
+        const long double p =
+            std::sqrt((cx * cx + cy * cy + cz * cz) / (dx * dx + dy * dy + dz * dz));
+        if (std::fabs(p - r) <= 1e-6L * r) continue;  // the tangent band, as docs/stability.md
+        ++counted;
+        ShapeHit hit;
+        const bool found = q.nearest(o, d, 0.0f, kInf, hit);
+        hits += found;
+        wrong += found != (p < r);
+    }
+    EXPECT_GT(hits, 200);
+    EXPECT_EQ(wrong, 0) << "of " << counted;
+}
+
 TEST(Quadric, NearestIsTheFirstCrossingPastTnear) {
     // Over random lines through a hyperboloid of one sheet clipped off-centre: nearest() agrees
     // with the sorted crossings, which alternate entering and leaving.
