@@ -264,10 +264,9 @@ class SceneParser {
         return *value;
     }
 
-    float real(const Json& value, const std::string& pointer, Bound bound = Bound::Any) const {
-        const char* expected = bound == Bound::Positive      ? "a number > 0"
-                               : bound == Bound::NonNegative ? "a number >= 0"
-                                                             : "a number";
+    // A number within the scene magnitude, in double (the quadric's coefficients keep it).
+    double number(const Json& value, const std::string& pointer,
+                  const char* expected = "a number") const {
         if (!value.is_number())
             fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
         const double v = value.get<double>();
@@ -275,6 +274,14 @@ class SceneParser {
             fail(pointer,
                  std::string("expected ") + kSceneMagnitudeRule + ", got " + describe(value));
         }
+        return v;
+    }
+
+    float real(const Json& value, const std::string& pointer, Bound bound = Bound::Any) const {
+        const char* expected = bound == Bound::Positive      ? "a number > 0"
+                               : bound == Bound::NonNegative ? "a number >= 0"
+                                                             : "a number";
+        const double v = number(value, pointer, expected);
         if ((bound == Bound::Positive && !(v > 0.0)) ||
             (bound == Bound::NonNegative && !(v >= 0.0))) {
             fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
@@ -411,13 +418,13 @@ class SceneParser {
             member = value.get<bool>();
         }
         template <size_t N>
-        void read(const Json& value, const std::string& where, std::array<float, N>& member,
+        void read(const Json& value, const std::string& where, std::array<double, N>& member,
                   FieldKind) {
             if (!value.is_array() || value.size() != N) {
                 parser.fail(where, "expected an array of " + std::to_string(N) + " numbers, got " +
                                        describe(value));
             }
-            for (size_t i = 0; i < N; ++i) member[i] = parser.real(value[i], child(where, i));
+            for (size_t i = 0; i < N; ++i) member[i] = parser.number(value[i], child(where, i));
         }
         void read(const Json& value, const std::string& where, Bounds3& member, FieldKind kind) {
             parser.require_object(value, where, expected(kind));

@@ -5,11 +5,11 @@
 namespace rayo {
 
 std::optional<FieldProblem> Quadric::problem() const {
-    for (float c : coefficients) {
+    for (double c : coefficients) {
         if (!std::isfinite(c)) return FieldProblem{"coefficients", "expected finite numbers"};
     }
     bool surface = false;  // some of A..I non-zero: J alone is everywhere or nowhere
-    for (int i = 0; i < 9; ++i) surface = surface || coefficients[i] != 0.0f;
+    for (int i = 0; i < 9; ++i) surface = surface || coefficients[i] != 0.0;
     if (!surface) {
         return FieldProblem{"coefficients",
                             "expected a non-zero quadratic or linear part (A..I not all 0)"};
@@ -22,7 +22,7 @@ std::optional<FieldProblem> Quadric::problem() const {
 }
 
 ClippedQuadric Quadric::intersector() const {
-    const auto k = [&](int i) { return static_cast<double>(coefficients[i]); };
+    const auto k = [&](int i) { return coefficients[i]; };
     ClippedQuadric q;
     // M = [[A, D/2, E/2], [D/2, B, F/2], [E/2, F/2, C]] (symmetric; glm is column-major).
     q.m = DMat3(k(0), 0.5 * k(3), 0.5 * k(4),  //

@@ -15,7 +15,9 @@
 namespace rayo {
 
 struct Quadric : QuadricShape<Quadric> {
-    std::array<float, 10> coefficients{};  // A B C D E F G H I J
+    // A B C D E F G H I J, in double: world-space coefficients of a shape far from the origin
+    // differ by many orders of magnitude (docs/stability.md, "Quadrics").
+    std::array<double, 10> coefficients{};
     Bounds3 clip{Vec3(-1.0f), Vec3(1.0f)};
     bool capped = true;  // false: the box faces are not surface (an open, clipped quadric)
     uint32_t material = 0;

@@ -18,7 +18,7 @@ enum class FieldKind {
     NonNegative,  // float >= 0
     Integer,      // int
     Flag,         // bool
-    Numbers,      // std::array<float, N>: exactly N finite numbers
+    Numbers,      // std::array<double, N>: exactly N finite numbers, kept in double
     Box,          // Bounds3: an object {"min": [x, y, z], "max": [x, y, z]}
 };
 
