@@ -44,6 +44,11 @@ struct ClippedQuadric {
     Bounds3 bounds() const;
     // The clip box's largest side: the shape's size for spawned-ray offsets.
     float size() const;
+    // q at a world point (0 on the surface, < 0 inside).
+    double value(const DVec3& world) const {
+        const DVec3 x = to_local(world);
+        return glm::dot(x, m * x) + glm::dot(g, x) + j;
+    }
     DVec3 to_local(const DVec3& world) const { return glm::transpose(rotation) * (world - origin); }
     DVec3 to_world(const DVec3& local) const { return origin + rotation * local; }
     // Cylindrical coordinates about the local z axis: u = angle/2π, v = z across the box.

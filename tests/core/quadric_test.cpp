@@ -352,6 +352,36 @@ TEST(Hyperboloid, OneSheetWaistAndTwoSheetVertices) {
     EXPECT_EQ(h.problem()->field, "sheets");
 }
 
+// Every end point of a shape's outline lies on its surface (|q| ~ 0), and there are some.
+template <typename S>
+void expect_outline_on_surface(const S& shape) {
+    Outline outline(OutlineView{DVec3(0.0, 2.0, 20.0), 1e-3});
+    shape.outline(outline);
+    ASSERT_GT(outline.segments().size(), 16u) << S::kName;
+    const ClippedQuadric q = shape.intersector();
+    for (const OutlineSegment& s : outline.segments()) {
+        EXPECT_NEAR(q.value(s.a), 0.0, 1e-9) << S::kName;
+        EXPECT_NEAR(q.value(s.b), 0.0, 1e-9) << S::kName;
+    }
+}
+
+TEST(QuadricForms, OutlinesLieOnTheSurface) {
+    Ellipsoid e;
+    e.radii = Vec3(2.0f, 1.0f, 0.5f);
+    expect_outline_on_surface(e);
+    Cylinder c;
+    c.top = Vec3(1.0f, 2.0f, 0.5f);
+    expect_outline_on_surface(c);
+    Paraboloid p;
+    p.axis = unit(Vec3(0.0f, 1.0f, 1.0f));
+    expect_outline_on_surface(p);
+    Hyperboloid h;
+    expect_outline_on_surface(h);
+    h.sheets = 2;
+    h.semi_axis = 0.5f;
+    expect_outline_on_surface(h);
+}
+
 TEST(Quadric, ThroughTheAccelAsUserGeometry) {
     Scene scene;
     scene.shapes.of<Quadric>().push_back(unit_sphere_quadric());
