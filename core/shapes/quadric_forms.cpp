@@ -1,5 +1,6 @@
 #include "core/shapes/quadric_forms.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rayo {
