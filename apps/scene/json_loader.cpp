@@ -1,6 +1,7 @@
 #include "apps/scene/json_loader.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 #include <initializer_list>
@@ -263,10 +264,9 @@ class SceneParser {
         return *value;
     }
 
-    float real(const Json& value, const std::string& pointer, Bound bound = Bound::Any) const {
-        const char* expected = bound == Bound::Positive      ? "a number > 0"
-                               : bound == Bound::NonNegative ? "a number >= 0"
-                                                             : "a number";
+    // A number within the scene magnitude, in double (the quadric's coefficients keep it).
+    double number(const Json& value, const std::string& pointer,
+                  const char* expected = "a number") const {
         if (!value.is_number())
             fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
         const double v = value.get<double>();
@@ -274,6 +274,14 @@ class SceneParser {
             fail(pointer,
                  std::string("expected ") + kSceneMagnitudeRule + ", got " + describe(value));
         }
+        return v;
+    }
+
+    float real(const Json& value, const std::string& pointer, Bound bound = Bound::Any) const {
+        const char* expected = bound == Bound::Positive      ? "a number > 0"
+                               : bound == Bound::NonNegative ? "a number >= 0"
+                                                             : "a number";
+        const double v = number(value, pointer, expected);
         if ((bound == Bound::Positive && !(v > 0.0)) ||
             (bound == Bound::NonNegative && !(v >= 0.0))) {
             fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
@@ -378,6 +386,14 @@ class SceneParser {
                     return "a number > 0";
                 case FieldKind::NonNegative:
                     return "a number >= 0";
+                case FieldKind::Integer:
+                    return "an integer";
+                case FieldKind::Flag:
+                    return "true or false";
+                case FieldKind::Numbers:
+                    return "an array of numbers";
+                case FieldKind::Box:
+                    return "{\"min\": [x, y, z], \"max\": [x, y, z]}";
             }
             return "a value";
         }
@@ -390,6 +406,33 @@ class SceneParser {
                                 : kind == FieldKind::NonNegative ? Bound::NonNegative
                                                                  : Bound::Any;
             member = parser.real(value, where, bound);
+        }
+        void read(const Json& value, const std::string& where, int& member, FieldKind) {
+            member = parser.integer(value, where, std::numeric_limits<int>::min(),
+                                    std::numeric_limits<int>::max());
+        }
+        void read(const Json& value, const std::string& where, bool& member, FieldKind) {
+            if (!value.is_boolean()) {
+                parser.fail(where, "expected true or false, got " + describe(value));
+            }
+            member = value.get<bool>();
+        }
+        template <size_t N>
+        void read(const Json& value, const std::string& where, std::array<double, N>& member,
+                  FieldKind) {
+            if (!value.is_array() || value.size() != N) {
+                parser.fail(where, "expected an array of " + std::to_string(N) + " numbers, got " +
+                                       describe(value));
+            }
+            for (size_t i = 0; i < N; ++i) member[i] = parser.number(value[i], child(where, i));
+        }
+        void read(const Json& value, const std::string& where, Bounds3& member, FieldKind kind) {
+            parser.require_object(value, where, expected(kind));
+            parser.check_keys(value, where, {"min", "max"});
+            member.lower =
+                parser.vec3(parser.require(value, where, "min", "[x, y, z]"), child(where, "min"));
+            member.upper =
+                parser.vec3(parser.require(value, where, "max", "[x, y, z]"), child(where, "max"));
         }
         template <typename T>
         void operator()(const char* name, T& member, FieldKind kind) {
@@ -429,7 +472,14 @@ class SceneParser {
         FieldReader reader{*this, value, pointer};
         shape.fields(reader);
         if (const std::optional<FieldProblem> problem = shape.problem()) {
-            fail(child(pointer, problem->field), problem->message);
+            // The field may be a path into a nested object ("bounds/max").
+            std::string where = pointer;
+            size_t from = 0;
+            for (size_t slash; (slash = problem->field.find('/', from)) != std::string::npos;
+                 from = slash + 1) {
+                where = child(where, problem->field.substr(from, slash - from));
+            }
+            fail(child(where, problem->field.substr(from)), problem->message);
         }
         shape.material = material_of(value, pointer);
         out.push_back(shape);

@@ -8,6 +8,9 @@
 #include <random>
 #include <stdexcept>
 
+#include "core/shapes/quadric.h"
+#include "core/shapes/quadric_forms.h"
+
 namespace rayo {
 namespace {
 
@@ -168,6 +171,34 @@ bool intersect_direct(SphereMath math, const StudyRay& ray, const Vec3& center, 
                             std::numeric_limits<float>::infinity(), t, far_root);
 }
 
+// The sphere as a quadric shape (StudyShape): its intersector, built once per case.
+ClippedQuadric sphere_as_quadric(StudyShape shape, const Vec3& center, float radius) {
+    if (shape == StudyShape::Ellipsoid) {
+        Ellipsoid e;
+        e.center = center;
+        e.radii = Vec3(radius);
+        return e.intersector();
+    }
+    // |x − c|² − r² expanded: the world-space coefficients a scene file would hold (double, as
+    // the shape keeps them), from the float centre and radius.
+    const DVec3 c(center);
+    const double r = radius;
+    Quadric q;
+    q.coefficients = {1, 1, 1, 0, 0, 0, -2.0 * c.x, -2.0 * c.y, -2.0 * c.z, glm::dot(c, c) - r * r};
+    q.clip = {center - Vec3(2.0f * radius), center + Vec3(2.0f * radius)};
+    return q.intersector();
+}
+
+bool intersect_quadric(const ClippedQuadric& quadric, const StudyRay& ray, float& t) {
+    ShapeHit hit;
+    if (!quadric.nearest(ray.origin, ray.direction, 0.0f, std::numeric_limits<float>::infinity(),
+                         hit)) {
+        return false;
+    }
+    t = hit.t;
+    return true;
+}
+
 bool intersect_accel(const Accel& accel, const StudyRay& ray, float& t) {
     Ray r;
     r.origin = ray.origin;
@@ -204,6 +235,8 @@ double median_of(std::vector<double>& v) {
 }  // namespace
 
 std::string study_method_name(const StudyMethod& m) {
+    if (m.shape == StudyShape::General) return "quadric";
+    if (m.shape == StudyShape::Ellipsoid) return "ellipsoid";
     if (m.method == SphereMethod::BruteForce) return "analytic";
     SphereRepresentation r;
     r.method = m.method;
@@ -228,6 +261,15 @@ std::vector<StudyMethod> default_study_methods() {
     methods.push_back({SphereMethod::EmbreePoint, SphereMath::Stable, 0});
     methods.push_back({SphereMethod::Mesh, SphereMath::Stable, 2});
     methods.push_back({SphereMethod::Mesh, SphereMath::Stable, 5});
+    return methods;
+}
+
+std::vector<StudyMethod> quadric_study_methods() {
+    std::vector<StudyMethod> methods;
+    methods.push_back({SphereMethod::BruteForce, SphereMath::Stable, 0});
+    methods.push_back({SphereMethod::BruteForce, SphereMath::Double, 0});
+    methods.push_back({SphereMethod::BruteForce, SphereMath::Double, 0, StudyShape::General});
+    methods.push_back({SphereMethod::BruteForce, SphereMath::Double, 0, StudyShape::Ellipsoid});
     return methods;
 }
 
@@ -284,6 +326,7 @@ std::vector<StabilityRow> run_stability_case(const StabilityCase& c,
         if (m.method != SphereMethod::BruteForce) {
             accel = std::make_unique<Accel>(scene, accel_options(m));
         }
+        const ClippedQuadric quadric = sphere_as_quadric(m.shape, center, radius);
         StabilityRow row;
         row.config = c;
         row.method = study_method_name(m);
@@ -298,7 +341,9 @@ std::vector<StabilityRow> run_stability_case(const StabilityCase& c,
         for (size_t i = 0; i < rays.size(); ++i) {
             float t = 0.0f;
             const bool hit = accel ? intersect_accel(*accel, rays[i], t)
-                                   : intersect_direct(m.math, rays[i], center, radius, t);
+                             : m.shape != StudyShape::Sphere
+                                 ? intersect_quadric(quadric, rays[i], t)
+                                 : intersect_direct(m.math, rays[i], center, radius, t);
             if (m.method == SphereMethod::User) {
                 float direct_t = 0.0f;
                 const bool direct_hit = intersect_direct(m.math, rays[i], center, radius, direct_t);
@@ -428,6 +473,14 @@ std::vector<StabilityRow> run_stability_study(const StabilityConfig& c) {
     append(rows, run_surface_sweep(c));
     append(rows, run_scale_sweep(c));
     append(rows, run_breaking_point_sweep(c));
+    return rows;
+}
+
+std::vector<StabilityRow> run_quadric_study(StabilityConfig c) {
+    c.methods = quadric_study_methods();
+    std::vector<StabilityRow> rows = run_distance_sweep(c);
+    append(rows, run_grazing_sweep(c));
+    append(rows, run_scale_sweep(c));
     return rows;
 }
 

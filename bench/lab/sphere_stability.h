@@ -17,10 +17,16 @@ namespace rayo {
 // One intersection method under study. BruteForce stands for the analytic formula called
 // directly (intersect_sphere, what `bruteforce` runs per sphere); User, EmbreePoint and Mesh go
 // through an Accel holding the one sphere. `math` matters for BruteForce and User only.
+// `shape` other than Sphere studies the sphere written as a quadric (core/shapes/quadric.h,
+// called directly): General = the `quadric` shape, x² + y² + z² − 2c·x + |c|² − r² with float
+// coefficients in world coordinates; Ellipsoid = the `ellipsoid` shape (centre and radii kept
+// apart). Both solve in double about the clip box's middle (core/shapes/clipped_quadric.h).
+enum class StudyShape { Sphere, General, Ellipsoid };
 struct StudyMethod {
     SphereMethod method = SphereMethod::BruteForce;
     SphereMath math = SphereMath::Stable;
     int mesh_level = 3;
+    StudyShape shape = StudyShape::Sphere;
 };
 
 // "analytic", "user", "embree-point", "mesh:N".
@@ -29,6 +35,9 @@ std::string study_method_name(const StudyMethod& m);
 std::string study_math_name(const StudyMethod& m);
 // Analytic and user × seed/stable/double, embree-point, mesh:2, mesh:5.
 std::vector<StudyMethod> default_study_methods();
+// The quadric study (docs/stability.md, "Quadrics"): analytic/stable and analytic/double for
+// comparison, then the sphere as a general `quadric` and as an `ellipsoid`.
+std::vector<StudyMethod> quadric_study_methods();
 
 enum class RayPattern {
     Disk,            // aimed uniformly over the projected disk out to (1 + aim) radii
@@ -119,6 +128,8 @@ std::vector<StabilityRow> run_scale_sweep(const StabilityConfig& c);
 std::vector<StabilityRow> run_breaking_point_sweep(const StabilityConfig& c);
 // All five sweeps, in that order.
 std::vector<StabilityRow> run_stability_study(const StabilityConfig& c);
+// The quadric study: the distance, grazing and scale sweeps of `c` with quadric_study_methods().
+std::vector<StabilityRow> run_quadric_study(StabilityConfig c);
 
 // --- spawned-ray self-intersection ---
 

@@ -5,12 +5,15 @@
 #include "core/shapes/box.h"
 #include "core/shapes/cone.h"
 #include "core/shapes/disk.h"
+#include "core/shapes/quadric.h"
+#include "core/shapes/quadric_forms.h"
 #include "core/shapes/shape_set.h"
 #include "core/shapes/sphere.h"
 
 namespace rayo {
 
-using AnalyticShapes = ShapeList<Sphere, Cone, Disk, Box>;
+using AnalyticShapes =
+    ShapeList<Sphere, Cone, Disk, Box, Quadric, Ellipsoid, Cylinder, Paraboloid, Hyperboloid>;
 using Shapes = ShapeSet<AnalyticShapes>;
 
 }  // namespace rayo

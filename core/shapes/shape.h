@@ -40,7 +40,9 @@ struct ShapeCrossing {
     float t = 0.0f;
     bool entering = true;
 };
-constexpr int kMaxShapeCrossings = 2;  // every current shape is convex or a quadric
+// A quadric solid clipped to a box (core/shapes/clipped_quadric.h) has the most: two inside
+// intervals of the quadric (a hyperboloid along its axis) within the box's one.
+constexpr int kMaxShapeCrossings = 4;
 
 // What the intersection reports: the distance, and a normal at the hit (any length, outward)
 // that surface() may use instead of recomputing it. `part` is for aggregate primitives (the

@@ -16,6 +16,10 @@ enum class FieldKind {
     Number,       // float
     Positive,     // float > 0
     NonNegative,  // float >= 0
+    Integer,      // int
+    Flag,         // bool
+    Numbers,      // std::array<double, N>: exactly N finite numbers, kept in double
+    Box,          // Bounds3: an object {"min": [x, y, z], "max": [x, y, z]}
 };
 
 // A constraint between fields that failed: the field to blame and what was expected.

@@ -310,12 +310,39 @@ TEST_F(BadInputJson, DegeneratePolygons) {
         });
 }
 
+TEST_F(BadInputJson, DegenerateQuadrics) {
+    const std::string box = R"("bounds": {"min": [-1, -1, -1], "max": [1, 1, 1]})";
+    expect_cases_refused(
+        "bad.json",
+        {
+            {"no quadratic or linear part",
+             with_object(R"({"type": "quadric", "coefficients": [0,0,0,0,0,0,0,0,0,-1], )" + box +
+                         "}"),
+             "bad.json#/objects/0/coefficients", "non-zero quadratic or linear part"},
+            {"coefficient beyond the scene magnitude",
+             with_object(R"({"type": "quadric", "coefficients": [1,1,1,0,0,0,0,0,0,-1e20], )" +
+                         box + "}"),
+             "bad.json#/objects/0/coefficients/9", "magnitude <= 1e18"},
+            {"inverted bounds",
+             with_object(R"({"type": "quadric", "coefficients": [1,1,1,0,0,0,0,0,0,-1],
+                             "bounds": {"min": [1, 1, 1], "max": [-1, -1, -1]}})"),
+             "bad.json#/objects/0/bounds/max", "expected max > min on every axis"},
+            {"missing bounds",
+             with_object(R"({"type": "quadric", "coefficients": [1,1,1,0,0,0,0,0,0,-1]})"),
+             "bad.json#/objects/0/bounds", "missing required field \"bounds\""},
+            {"cylinder of zero length",
+             with_object(R"({"type": "cylinder", "base": [0,0,0], "top": [0,0,0], "radius": 1})"),
+             "bad.json#/objects/0/top", "expected top != base"},
+        });
+}
+
 TEST_F(BadInputJson, MissingMeshFiles) {
     expect_cases_refused(
         "bad.json",
         {
             {"missing obj", with_object(R"({"type": "mesh", "file": "none.obj"})"),
-             "bad.json#/objects/0/file", "cannot open mesh file 'none.obj': No such file or directory"},
+             "bad.json#/objects/0/file",
+             "cannot open mesh file 'none.obj': No such file or directory"},
             {"missing glb in a folder", with_object(R"({"type": "mesh", "file": "no/none.glb"})"),
              "bad.json#/objects/0/file", "'no/none.glb'"},
             {"unknown mesh format", with_object(R"({"type": "mesh", "file": "a.stl"})"),

@@ -100,6 +100,40 @@ TEST(StabilityDouble, CleanFurtherOutThanFloat) {
     EXPECT_LT(dbl.wrong_rate, flt.wrong_rate);
 }
 
+StabilityRow run_shape(const StabilityCase& c, StudyShape shape) {
+    return run_stability_case(c,
+                              {StudyMethod{SphereMethod::BruteForce, SphereMath::Double, 0, shape}})
+        .at(0);
+}
+
+TEST(StabilityQuadric, EllipsoidIsCleanAtEveryDistanceOfTheSweep) {
+    // docs/stability.md, "Quadrics": the named form solves in double about the middle of its box,
+    // so nothing cancels even at 1e7 radii, where the double sphere (solved about the ray's
+    // origin) already misjudges rays.
+    for (double d : {3.0, 1e3, 1e5, 1e6, 1e7}) {
+        const StabilityRow row = run_shape(disk_at(d), StudyShape::Ellipsoid);
+        EXPECT_EQ(row.wrong_hits + row.wrong_misses, 0) << d;
+        EXPECT_GT(row.reference_hits, 1000) << d;
+        EXPECT_LT(row.t_rel_max, 2e-7) << d;  // rounding t to float
+    }
+    EXPECT_GT(run_one(disk_at(1e7), SphereMethod::BruteForce, SphereMath::Double).wrong_rate, 0.01);
+}
+
+TEST(StabilityQuadric, WorldCoefficientsLoseSmallShapesFarFromTheOrigin) {
+    // The general quadric's coefficients are world-space: a sphere of radius r at distance M
+    // from the origin has J = M² − r², and r² drowns in J's rounding once r² < ε_double·M². At
+    // the origin it matches the ellipsoid; at r = 1 and M = 1e4 too; at r = 1e-3 and M = 1e6
+    // it fails where the ellipsoid (centre kept apart) does not.
+    StabilityCase c = disk_at(10.0);
+    EXPECT_EQ(run_shape(c, StudyShape::General).wrong_rate, 0.0);
+    c.center_magnitude = 1e4;
+    EXPECT_EQ(run_shape(c, StudyShape::General).wrong_rate, 0.0);
+    c.radius = 1e-3;
+    c.center_magnitude = 1e6;
+    EXPECT_GT(run_shape(c, StudyShape::General).wrong_rate, 0.1);
+    EXPECT_EQ(run_shape(c, StudyShape::Ellipsoid).wrong_rate, 0.0);
+}
+
 TEST(StabilityUser, EmbreeUserGeometryGivesTheDirectCallsNumbers) {
     const std::vector<StudyMethod> users = {{SphereMethod::User, SphereMath::Seed, 0},
                                             {SphereMethod::User, SphereMath::Stable, 0},

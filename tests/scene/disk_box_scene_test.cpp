@@ -63,7 +63,8 @@ TEST(DiskBoxScene, ErrorsNameTheJsonPointer) {
                   .find("s.json#/objects/0/radius: unknown key"),
               std::string::npos);
     EXPECT_NE(error_of(with_object(R"({"type": "torus"})"))
-                  .find("\"sphere\", \"cone\", \"disk\", \"box\", \"triangle\""),
+                  .find("\"box\", \"quadric\", \"ellipsoid\", \"cylinder\", \"paraboloid\", "
+                        "\"hyperboloid\", \"triangle\""),
               std::string::npos);
 }
 
