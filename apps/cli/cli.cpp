@@ -72,6 +72,10 @@ render options:
   --aa-threshold X         adaptive: subdivide while corners differ by more than X (sum of
                            the absolute RGBA differences), a number >= 0 [0.3]
   --aa-depth N             adaptive: at most N subdivisions per pixel, 0..8 [3]
+  --gi G                   global illumination: none, or radiosity (a pre-pass over the
+                           meshes' patches, the scene's "radiosity" settings; docs/radiosity.md)
+                           [scene's render.gi, default none]
+  --gi-view V              radiosity: smooth (vertex colours, default) or patches (flat)
   --display D, --view V    OCIO display and view for PNG/TIFF/JPEG [config defaults]
   --range R                clamp (default) or normalize (divide by the image maximum)
   --half                   write EXR as half float
@@ -160,6 +164,8 @@ struct RenderArgs {
     std::optional<AntiAliasing> aa;
     std::optional<float> aa_threshold;
     std::optional<int> aa_depth;
+    std::optional<GlobalIllumination> gi;
+    bool gi_view_patches = false;
     SceneLoadOptions load_options;
     bool flat_spheres = false;
     bool single_rays = false;
@@ -221,6 +227,21 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             r.aa_threshold = static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
         } else if (a == "--aa-depth") {
             r.aa_depth = parse_int(a, cursor.value(), 0, kMaxAdaptiveDepth);
+        } else if (a == "--gi") {
+            const std::string& m = cursor.value();
+            if (m == "none") {
+                r.gi = GlobalIllumination::None;
+            } else if (m == "radiosity") {
+                r.gi = GlobalIllumination::Radiosity;
+            } else {
+                throw UsageError(a + ": expected 'none' or 'radiosity', got '" + m + "'");
+            }
+        } else if (a == "--gi-view") {
+            const std::string& m = cursor.value();
+            if (m != "smooth" && m != "patches") {
+                throw UsageError(a + ": expected 'smooth' or 'patches', got '" + m + "'");
+            }
+            r.gi_view_patches = m == "patches";
         } else if (a == "--nff-light-intensity") {
             r.load_options.nff.light_intensity =
                 static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
@@ -287,6 +308,8 @@ void apply_overrides(const RenderArgs& args, SceneDescription& d) {
     if (args.aa) d.settings.aa = *args.aa;
     if (args.aa_threshold) d.settings.adaptive.threshold = *args.aa_threshold;
     if (args.aa_depth) d.settings.adaptive.depth = *args.aa_depth;
+    if (args.gi) d.settings.gi = *args.gi;
+    if (args.gi_view_patches) d.settings.gi_view_patches = true;
 }
 
 std::string default_output_path(const RenderArgs& args) {
@@ -428,6 +451,15 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
             << ", refract " << human_count(c.refraction) << ") " << std::fixed
             << std::setprecision(2) << mrays << " Mrays/s | total "
             << format_duration(seconds_since(total_start)) << "\n";
+        if (result.radiosity) {
+            const RadiosityStats& rs = result.radiosity_stats;
+            out << "rayo: radiosity " << result.radiosity_patches << " patches | solve "
+                << format_duration(rs.seconds) << ", " << rs.shots << " shots, unshot "
+                << std::scientific << std::setprecision(2) << rs.unshot_fraction
+                << " of the emitted energy, form-factor rays "
+                << human_count(rs.form_factor_rays) << "\n"
+                << std::defaultfloat;
+        }
     }
     return 0;
 }
