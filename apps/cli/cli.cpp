@@ -456,8 +456,8 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
             out << "rayo: radiosity " << result.radiosity_patches << " patches | solve "
                 << format_duration(rs.seconds) << ", " << rs.shots << " shots, unshot "
                 << std::scientific << std::setprecision(2) << rs.unshot_fraction
-                << " of the emitted energy, form-factor rays "
-                << human_count(rs.form_factor_rays) << "\n"
+                << " of the emitted energy, form-factor rays " << human_count(rs.form_factor_rays)
+                << "\n"
                 << std::defaultfloat;
         }
     }
