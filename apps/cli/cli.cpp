@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <map>
 #include <optional>
@@ -76,6 +77,7 @@ render options:
                            meshes' patches, the scene's "radiosity" settings; docs/radiosity.md)
                            [scene's render.gi, default none]
   --gi-view V              radiosity: smooth (vertex colours, default) or patches (flat)
+  --gi-log FILE            radiosity: write the unshot energy after every shot (CSV)
   --display D, --view V    OCIO display and view for PNG/TIFF/JPEG [config defaults]
   --range R                clamp (default) or normalize (divide by the image maximum)
   --half                   write EXR as half float
@@ -166,6 +168,7 @@ struct RenderArgs {
     std::optional<int> aa_depth;
     std::optional<GlobalIllumination> gi;
     bool gi_view_patches = false;
+    std::optional<std::string> gi_log;
     SceneLoadOptions load_options;
     bool flat_spheres = false;
     bool single_rays = false;
@@ -242,6 +245,8 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
                 throw UsageError(a + ": expected 'smooth' or 'patches', got '" + m + "'");
             }
             r.gi_view_patches = m == "patches";
+        } else if (a == "--gi-log") {
+            r.gi_log = cursor.value();
         } else if (a == "--nff-light-intensity") {
             r.load_options.nff.light_intensity =
                 static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
@@ -389,6 +394,15 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "  paths cut by contribution   " << c.contribution_cut << "\n"
         << "  throughput                  " << std::fixed << std::setprecision(2) << mrays
         << " Mrays/s\n";
+    if (r.radiosity) {
+        const RadiosityStats& rs = r.radiosity_stats;
+        out << "  radiosity patches           " << r.radiosity_patches << "\n"
+            << "  radiosity shots             " << rs.shots << "\n"
+            << "  radiosity unshot energy     " << std::scientific << std::setprecision(3)
+            << rs.unshot_fraction << " of the emitted\n"
+            << std::defaultfloat << "  radiosity form-factor rays  " << rs.form_factor_rays << "\n"
+            << "  time radiosity solve        " << format_duration(rs.seconds) << "\n";
+    }
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -435,6 +449,14 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
     write_image(result.film, output, options);
     const double write_s = seconds_since(start);
 
+    if (args.gi_log && result.radiosity) {
+        // The chart of docs/radiosity.md: unshot energy (a fraction of the emitted) per shot.
+        std::ofstream log(*args.gi_log);
+        log << "shot,unshot_fraction\n" << std::setprecision(9);
+        const std::vector<double>& history = result.radiosity_stats.history;
+        for (size_t i = 0; i < history.size(); ++i) log << i + 1 << "," << history[i] << "\n";
+        if (!log) throw std::runtime_error("--gi-log: cannot write '" + *args.gi_log + "'");
+    }
     if (args.stats) print_stats_table(out, d, result, parse_s, write_s);
     if (!args.quiet) {
         const RayCounters& c = result.counters;

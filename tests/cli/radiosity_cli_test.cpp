@@ -4,6 +4,7 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -30,8 +31,25 @@ const char* const kRoom = R"({"rayo": 1,
 
 TEST_F(RadiosityCli, RendersWithASummaryLine) {
     write("room.json", kRoom);
-    const CommandResult r = run("render room.json --gi radiosity -o room.exr");
+    const CommandResult r =
+        run("render room.json --gi radiosity --gi-log unshot.csv --stats -o room.exr");
     ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("radiosity shots"), std::string::npos) << r.output;
+    // The log: a header and one line per shot, the unshot fraction falling to the threshold.
+    std::ifstream log(m_dir / "unshot.csv");
+    std::string line;
+    ASSERT_TRUE(std::getline(log, line));
+    EXPECT_EQ(line, "shot,unshot_fraction");
+    int shots = 0;
+    double last = 1.0;
+    while (std::getline(log, line)) {
+        ++shots;
+        EXPECT_EQ(line.substr(0, line.find(',')), std::to_string(shots));
+        last = std::stod(line.substr(line.find(',') + 1));
+    }
+    EXPECT_GT(shots, 1);
+    EXPECT_LE(last, 0.01);
+    EXPECT_NE(r.output.find(std::to_string(shots) + " shots"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("rayo: radiosity "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(" patches | solve "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(" shots, unshot "), std::string::npos) << r.output;
