@@ -450,8 +450,7 @@ class SceneParser {
     Light parse_light(const Json& value, const std::string& pointer) const;
     AreaLight parse_area_light(const Json& value, const std::string& pointer) const;
     Fog parse_fog(const Json& value, const std::string& pointer) const;
-    void parse_radiosity(const Json& value, const std::string& pointer,
-                         RadiositySettings& r) const;
+    void parse_radiosity(const Json& value, const std::string& pointer, RadiositySettings& r) const;
     Attenuation parse_attenuation(const Json& value, const std::string& pointer) const;
     void parse_object(const Json& value, const std::string& pointer, SceneDescription& out,
                       TriangleMesh& polygons);
@@ -969,8 +968,8 @@ void SceneParser::parse_radiosity(const Json& value, const std::string& pointer,
                    "\"form_factors\", \"rays\"}");
     check_keys(value, pointer, {"patch_size", "threshold", "max_shots", "form_factors", "rays"});
     r.patch_size = real_or(value, pointer, "patch_size", r.patch_size, Bound::NonNegative);
-    r.threshold = real_or(value, pointer, "threshold", static_cast<float>(r.threshold),
-                          Bound::NonNegative);
+    r.threshold =
+        real_or(value, pointer, "threshold", static_cast<float>(r.threshold), Bound::NonNegative);
     if (const Json* v = find(value, "max_shots")) {
         r.max_shots = integer(*v, child(pointer, "max_shots"), 0, 100000000);
     }
