@@ -65,7 +65,9 @@ RadiosityField::RadiosityField(const Scene& scene, const std::vector<Material>& 
             cut.first_patch = static_cast<uint32_t>(m_patches.size());
             cut.first_vertex = static_cast<uint32_t>(m_vertex_of.size());
             const Material& material = materials[mesh.materials[t]];
-            const Vec3 normal = glm::normalize(glm::cross(b - a, c - a));
+            const Vec3 cross = glm::cross(b - a, c - a);
+            const float length = glm::length(cross);
+            const Vec3 normal = length > 0.0f ? cross / length : Vec3(0.0f);  // 0: no patch area
             auto point = [&](uint32_t i, uint32_t j) {
                 return a + (b - a) * (static_cast<float>(i) / k) +
                        (c - a) * (static_cast<float>(j) / k);
