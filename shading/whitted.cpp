@@ -87,12 +87,13 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(
     }
     p.to_eye = -ray.direction;
     p.shadow_origin = offset_ray_origin(hit, p.facing_geometric);
+    if (m_radiosity && p.entering) p.radiosity = m_radiosity->reflected(hit, p.radiosity_reflected);
     return p;
 }
 
 Vec3 WhittedIntegrator::ambient_and_emission(const ShadingPoint& p) const {
     const SurfaceCoefficients& m = p.material();
-    Vec3 color = m.ka * m_scene.ambient_light;
+    Vec3 color = p.radiosity ? p.radiosity_reflected : m.ka * m_scene.ambient_light;
     // An emitter is seen on its front, the side its geometric normal points to (the outside of
     // closed shapes, a disk's normal, a polygon's winding).
     if (m.emissive() && p.entering) color += m.emission;
@@ -112,6 +113,8 @@ WhittedIntegrator::LightSide WhittedIntegrator::light_sample(const ShadingPoint&
                                                              Vec3& light_radiance) const {
     // Pure emitters skip the lights (other materials keep their shadow rays and counts as before).
     if (p.material().emissive() && !p.material().lit()) return LightSide::None;
+    // An area light's surface shoots in the radiosity solve: its light is in the solution.
+    if (p.radiosity && std::holds_alternative<AreaLight>(light)) return LightSide::None;
     LightSample sample;
     if (!sample_light(light, hit.position, u, sample)) return LightSide::None;
     to_light = sample.direction;

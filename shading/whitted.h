@@ -6,6 +6,7 @@
 
 #include "core/accel.h"
 #include "core/stats.h"
+#include "shading/radiosity_field.h"
 #include "shading/shading_scene.h"
 
 namespace rayo {
@@ -25,8 +26,13 @@ struct WhittedSettings {
 
 class WhittedIntegrator {
   public:
-    WhittedIntegrator(const Accel& accel, const ShadingScene& scene, const WhittedSettings& s)
-        : m_accel(accel), m_scene(scene), m_settings(s) {}
+    // With a radiosity solution (docs/radiosity.md), the front of a patch-covered surface takes
+    // the radiance its patches reflect in place of ka·Ia, and area lights (whose emitting
+    // surfaces are in the solve) give it no direct light; point and directional lights, which
+    // are not in the solve, still do.
+    WhittedIntegrator(const Accel& accel, const ShadingScene& scene, const WhittedSettings& s,
+                      const RadiosityField* radiosity = nullptr)
+        : m_accel(accel), m_scene(scene), m_settings(s), m_radiosity(radiosity) {}
 
     // Radiance arriving along `ray` (a camera ray: counts it as such).
     Vec3 radiance(const Ray& ray, RayCounters& counters) const;
@@ -45,6 +51,9 @@ class WhittedIntegrator {
         // The medium the arriving ray travelled through: the absorbing material whose inside it
         // crossed, or null for the space between objects (the fog's).
         const SurfaceCoefficients* medium = nullptr;
+        // The radiance the radiosity solution reflects here, when the hit has one.
+        bool radiosity = false;
+        Vec3 radiosity_reflected{0.0f};
         // Not a stored pointer to `textured`: points are copied and must stay valid.
         const SurfaceCoefficients& material() const { return textured ? *textured : *base; }
     };
@@ -79,12 +88,14 @@ class WhittedIntegrator {
                const SurfaceCoefficients* medium) const;
     Vec3 shade(const Ray& ray, const SurfaceHit& hit, int depth, const Vec3& weight,
                RayCounters& counters, const SurfaceCoefficients* medium) const;
-    // ka·Ia plus the emission the ray sees (the front side of an emissive surface).
+    // ka·Ia (or the radiosity solution's reflected radiance) plus the emission the ray sees (the
+    // front side of an emissive surface).
     Vec3 ambient_and_emission(const ShadingPoint& p) const;
 
     const Accel& m_accel;
     const ShadingScene& m_scene;
     WhittedSettings m_settings;
+    const RadiosityField* m_radiosity;
 };
 
 // Origin of a ray leaving `hit` on the side `side_normal` points to: offset along the

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <map>
 #include <optional>
@@ -72,6 +73,11 @@ render options:
   --aa-threshold X         adaptive: subdivide while corners differ by more than X (sum of
                            the absolute RGBA differences), a number >= 0 [0.3]
   --aa-depth N             adaptive: at most N subdivisions per pixel, 0..8 [3]
+  --gi G                   global illumination: none, or radiosity (a pre-pass over the
+                           meshes' patches, the scene's "radiosity" settings; docs/radiosity.md)
+                           [scene's render.gi, default none]
+  --gi-view V              radiosity: smooth (vertex colours, default) or patches (flat)
+  --gi-log FILE            radiosity: write the unshot energy after every shot (CSV)
   --display D, --view V    OCIO display and view for PNG/TIFF/JPEG [config defaults]
   --range R                clamp (default) or normalize (divide by the image maximum)
   --half                   write EXR as half float
@@ -160,6 +166,9 @@ struct RenderArgs {
     std::optional<AntiAliasing> aa;
     std::optional<float> aa_threshold;
     std::optional<int> aa_depth;
+    std::optional<GlobalIllumination> gi;
+    bool gi_view_patches = false;
+    std::optional<std::string> gi_log;
     SceneLoadOptions load_options;
     bool flat_spheres = false;
     bool single_rays = false;
@@ -221,6 +230,23 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             r.aa_threshold = static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
         } else if (a == "--aa-depth") {
             r.aa_depth = parse_int(a, cursor.value(), 0, kMaxAdaptiveDepth);
+        } else if (a == "--gi") {
+            const std::string& m = cursor.value();
+            if (m == "none") {
+                r.gi = GlobalIllumination::None;
+            } else if (m == "radiosity") {
+                r.gi = GlobalIllumination::Radiosity;
+            } else {
+                throw UsageError(a + ": expected 'none' or 'radiosity', got '" + m + "'");
+            }
+        } else if (a == "--gi-view") {
+            const std::string& m = cursor.value();
+            if (m != "smooth" && m != "patches") {
+                throw UsageError(a + ": expected 'smooth' or 'patches', got '" + m + "'");
+            }
+            r.gi_view_patches = m == "patches";
+        } else if (a == "--gi-log") {
+            r.gi_log = cursor.value();
         } else if (a == "--nff-light-intensity") {
             r.load_options.nff.light_intensity =
                 static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
@@ -287,6 +313,8 @@ void apply_overrides(const RenderArgs& args, SceneDescription& d) {
     if (args.aa) d.settings.aa = *args.aa;
     if (args.aa_threshold) d.settings.adaptive.threshold = *args.aa_threshold;
     if (args.aa_depth) d.settings.adaptive.depth = *args.aa_depth;
+    if (args.gi) d.settings.gi = *args.gi;
+    if (args.gi_view_patches) d.settings.gi_view_patches = true;
 }
 
 std::string default_output_path(const RenderArgs& args) {
@@ -366,6 +394,15 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "  paths cut by contribution   " << c.contribution_cut << "\n"
         << "  throughput                  " << std::fixed << std::setprecision(2) << mrays
         << " Mrays/s\n";
+    if (r.radiosity) {
+        const RadiosityStats& rs = r.radiosity_stats;
+        out << "  radiosity patches           " << r.radiosity_patches << "\n"
+            << "  radiosity shots             " << rs.shots << "\n"
+            << "  radiosity unshot energy     " << std::scientific << std::setprecision(3)
+            << rs.unshot_fraction << " of the emitted\n"
+            << std::defaultfloat << "  radiosity form-factor rays  " << rs.form_factor_rays << "\n"
+            << "  time radiosity solve        " << format_duration(rs.seconds) << "\n";
+    }
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -412,6 +449,14 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
     write_image(result.film, output, options);
     const double write_s = seconds_since(start);
 
+    if (args.gi_log && result.radiosity) {
+        // The chart of docs/radiosity.md: unshot energy (a fraction of the emitted) per shot.
+        std::ofstream log(*args.gi_log);
+        log << "shot,unshot_fraction\n" << std::setprecision(9);
+        const std::vector<double>& history = result.radiosity_stats.history;
+        for (size_t i = 0; i < history.size(); ++i) log << i + 1 << "," << history[i] << "\n";
+        if (!log) throw std::runtime_error("--gi-log: cannot write '" + *args.gi_log + "'");
+    }
     if (args.stats) print_stats_table(out, d, result, parse_s, write_s);
     if (!args.quiet) {
         const RayCounters& c = result.counters;
@@ -428,6 +473,15 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
             << ", refract " << human_count(c.refraction) << ") " << std::fixed
             << std::setprecision(2) << mrays << " Mrays/s | total "
             << format_duration(seconds_since(total_start)) << "\n";
+        if (result.radiosity) {
+            const RadiosityStats& rs = result.radiosity_stats;
+            out << "rayo: radiosity " << result.radiosity_patches << " patches | solve "
+                << format_duration(rs.seconds) << ", " << rs.shots << " shots, unshot "
+                << std::scientific << std::setprecision(2) << rs.unshot_fraction
+                << " of the emitted energy, form-factor rays " << human_count(rs.form_factor_rays)
+                << "\n"
+                << std::defaultfloat;
+        }
     }
     return 0;
 }

@@ -500,6 +500,7 @@ class SceneParser {
     Light parse_light(const Json& value, const std::string& pointer) const;
     AreaLight parse_area_light(const Json& value, const std::string& pointer) const;
     Fog parse_fog(const Json& value, const std::string& pointer) const;
+    void parse_radiosity(const Json& value, const std::string& pointer, RadiositySettings& r) const;
     Attenuation parse_attenuation(const Json& value, const std::string& pointer) const;
     void parse_object(const Json& value, const std::string& pointer, SceneDescription& out,
                       TriangleMesh& polygons);
@@ -523,7 +524,7 @@ SceneDescription SceneParser::parse(const Json& root) {
     }
     check_keys(root, "",
                {"rayo", "camera", "render", "background", "ambient_light", "fog", "textures",
-                "materials", "lights", "objects"});
+                "materials", "lights", "objects", "radiosity"});
 
     SceneDescription out;
     out.source = m_source;
@@ -544,6 +545,9 @@ SceneDescription SceneParser::parse(const Json& root) {
     out.shading.background = colour_or(root, "", "background", Vec3(0.0f));
     out.shading.ambient_light = colour_or(root, "", "ambient_light", Vec3(1.0f));
     if (const Json* value = find(root, "fog")) out.shading.fog = parse_fog(*value, "/fog");
+    if (const Json* value = find(root, "radiosity")) {
+        parse_radiosity(*value, "/radiosity", out.settings.radiosity);
+    }
 
     // Textures first: materials refer to them by name.
     if (const Json* value = find(root, "textures")) {
@@ -648,7 +652,7 @@ void SceneParser::parse_render(const Json& value, const std::string& pointer,
     require_object(value, pointer, "a render settings object");
     check_keys(value, pointer,
                {"spp", "max_depth", "min_contribution", "tile_size", "sphere_math", "sphere_method",
-                "aa", "aa_threshold", "aa_depth", "shadows"});
+                "aa", "aa_threshold", "aa_depth", "shadows", "gi"});
     if (const Json* v = find(value, "shadows")) {
         s.whitted.shadows =
             choice(*v, child(pointer, "shadows"), {"opaque", "filtered"}) == "filtered"
@@ -656,6 +660,11 @@ void SceneParser::parse_render(const Json& value, const std::string& pointer,
                 : ShadowMode::Opaque;
     }
     if (const Json* v = find(value, "spp")) s.spp = integer(*v, child(pointer, "spp"), 1, 1 << 20);
+    if (const Json* v = find(value, "gi")) {
+        s.gi = choice(*v, child(pointer, "gi"), {"none", "radiosity"}) == "radiosity"
+                   ? GlobalIllumination::Radiosity
+                   : GlobalIllumination::None;
+    }
     if (const Json* v = find(value, "max_depth")) {
         s.whitted.max_depth = integer(*v, child(pointer, "max_depth"), 0, 64);
     }
@@ -999,6 +1008,28 @@ AreaLight SceneParser::parse_area_light(const Json& value, const std::string& po
     light.color = colour_or(value, pointer, "color", Vec3(1.0f));
     light.intensity = real_or(value, pointer, "intensity", 1.0f, Bound::NonNegative);
     return light;
+}
+
+// The radiosity pre-pass (docs/radiosity.md): used when render.gi is "radiosity".
+void SceneParser::parse_radiosity(const Json& value, const std::string& pointer,
+                                  RadiositySettings& r) const {
+    require_object(value, pointer,
+                   "a radiosity object {\"patch_size\", \"threshold\", \"max_shots\", "
+                   "\"form_factors\", \"rays\"}");
+    check_keys(value, pointer, {"patch_size", "threshold", "max_shots", "form_factors", "rays"});
+    r.patch_size = real_or(value, pointer, "patch_size", r.patch_size, Bound::NonNegative);
+    r.threshold =
+        real_or(value, pointer, "threshold", static_cast<float>(r.threshold), Bound::NonNegative);
+    if (const Json* v = find(value, "max_shots")) {
+        r.max_shots = integer(*v, child(pointer, "max_shots"), 0, 100000000);
+    }
+    if (const Json* v = find(value, "rays")) r.rays = integer(*v, child(pointer, "rays"), 1, 65536);
+    if (const Json* v = find(value, "form_factors")) {
+        r.form_factors =
+            choice(*v, child(pointer, "form_factors"), {"rays", "analytic"}) == "analytic"
+                ? FormFactorMethod::Analytic
+                : FormFactorMethod::Rays;
+    }
 }
 
 Fog SceneParser::parse_fog(const Json& value, const std::string& pointer) const {

@@ -3,13 +3,16 @@
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 
 #include "core/accel.h"
 #include "core/camera.h"
 #include "core/error.h"
 #include "core/render.h"
+#include "shading/radiosity_field.h"
 #include "shading/whitted.h"
 
 namespace rayo {
@@ -83,7 +86,34 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     result.bvh_seconds = seconds_since(start);
     result.primitives = accel.primitive_count();
 
-    const WhittedIntegrator integrator(accel, description.shading, description.settings.whitted);
+    // Radiosity (seed 004), the first of two passes: the meshes' patches exchange light through
+    // the accel's occlusion rays; the second pass below shows the solution on diffuse surfaces
+    // and traces mirrors and glass through to it.
+    std::unique_ptr<RadiosityField> radiosity;
+    if (description.settings.gi == GlobalIllumination::Radiosity) {
+        const RadiositySettings& rs = description.settings.radiosity;
+        radiosity = std::make_unique<RadiosityField>(description.scene,
+                                                     description.shading.materials, rs.patch_size);
+        result.radiosity = true;
+        result.radiosity_patches = radiosity->patches().size();
+        // The bar follows the unshot energy on a log scale, from 1 down to the threshold.
+        constexpr uint64_t kSteps = 1000;
+        const double floor = std::log(std::clamp(rs.threshold, 1e-12, 0.5));
+        uint64_t shown = 0;
+        ProgressReporter progress(kSteps, "radiosity", show_progress);
+        const std::vector<DVec3> b = solve_radiosity(
+            radiosity->patches(), &accel, rs, result.radiosity_stats, [&](double unshot) {
+                const double done = unshot > 0.0 ? std::log(unshot) / floor : 1.0;
+                const auto steps = static_cast<uint64_t>(std::clamp(done, 0.0, 1.0) * kSteps);
+                if (steps > shown) progress.add(steps - shown);
+                shown = std::max(shown, steps);
+            });
+        radiosity->set_solution(b);
+        radiosity->set_flat(description.settings.gi_view_patches);
+    }
+
+    const WhittedIntegrator integrator(accel, description.shading, description.settings.whitted,
+                                       radiosity.get());
     result.film = Film(camera.width(), camera.height());
     TileSettings tiles;
     tiles.spp = description.settings.spp;

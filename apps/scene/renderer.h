@@ -17,6 +17,10 @@ struct RenderResult {
     int threads = 0;
     SphereChoice spheres;   // the sphere method and math that ran, and why
     bool coherent = false;  // camera/shadow rays traced as per-tile Embree streams
+    // The radiosity pre-pass, when render.gi is "radiosity" (docs/radiosity.md).
+    bool radiosity = false;
+    size_t radiosity_patches = 0;
+    RadiosityStats radiosity_stats;
 };
 
 // threads = 0: all cores. Throws InputError for an invalid camera.

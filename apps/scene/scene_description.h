@@ -9,10 +9,15 @@
 #include "core/scene.h"
 #include "core/sphere_method.h"
 #include "core/tile_grid.h"
+#include "shading/radiosity.h"
 #include "shading/shading_scene.h"
 #include "shading/whitted.h"
 
 namespace rayo {
+
+// Global illumination besides Whitted's ray tree: none, or a radiosity pre-pass whose solution
+// the diffuse surfaces show (docs/radiosity.md).
+enum class GlobalIllumination { None, Radiosity };
 
 struct RenderSettings {
     int spp = 1;
@@ -24,6 +29,9 @@ struct RenderSettings {
     AntiAliasing aa = AntiAliasing::Stratified;  // "aa": stratified spp, or adaptive
     AdaptiveSettings adaptive;                   // "aa_threshold", "aa_depth"
     WhittedSettings whitted;
+    GlobalIllumination gi = GlobalIllumination::None;  // "gi", --gi
+    RadiositySettings radiosity;                       // the top-level "radiosity" object
+    bool gi_view_patches = false;                      // --gi-view patches: flat patches
 };
 
 struct SceneDescription {

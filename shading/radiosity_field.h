@@ -1,0 +1,51 @@
+#pragma once
+// The radiosity solution as the renderer sees it (seed 004: vertex colours by averaging the
+// patches around each vertex): the scene's triangle meshes cut into patches, and after the solve
+// a radiance per patch vertex, interpolated across each patch. docs/radiosity.md.
+#include <cstdint>
+#include <vector>
+
+#include "core/scene.h"
+#include "core/surface_hit.h"
+#include "shading/material.h"
+#include "shading/radiosity.h"
+
+namespace rayo {
+
+class RadiosityField {
+  public:
+    // Cuts every triangle of every mesh into k×k congruent triangles (k the least with edges no
+    // longer than patch_size; 1 when patch_size is 0), with the emission and reflectance (kd) of
+    // its material. Analytic shapes (spheres, boxes, ...) are not in the solve.
+    RadiosityField(const Scene& scene, const std::vector<Material>& materials, float patch_size);
+
+    const std::vector<RadiosityPatch>& patches() const { return m_patches; }
+
+    // Stores the solution: each vertex gets the average over the patches around it (those of
+    // the same orientation, so a room's corner does not mix its walls) of B − E, the radiance
+    // the patches reflect (their emission the renderer adds itself).
+    void set_solution(const std::vector<DVec3>& radiosity);
+    // Flat patches instead of interpolated vertices (the `--gi-view patches` debug view).
+    void set_flat(bool flat) { m_flat = flat; }
+
+    // The reflected radiance at a triangle hit (interpolated from the patch's vertices); false
+    // for other shapes and before set_solution. The caller asks only for the front side.
+    bool reflected(const SurfaceHit& hit, Vec3& radiance) const;
+
+  private:
+    struct TriangleCut {
+        uint32_t k = 1;             // subdivisions per edge
+        uint32_t first_patch = 0;   // k² patches from here
+        uint32_t first_vertex = 0;  // (k+1)(k+2)/2 entries of m_vertex_of from here
+    };
+    const Scene& m_scene;
+    std::vector<std::vector<TriangleCut>> m_cuts;  // per mesh, per triangle
+    std::vector<RadiosityPatch> m_patches;
+    std::vector<uint32_t> m_vertex_of;  // grid point -> shared vertex
+    uint32_t m_vertex_count = 0;
+    std::vector<Vec3> m_vertex_radiance;
+    std::vector<Vec3> m_patch_radiance;
+    bool m_flat = false;
+};
+
+}  // namespace rayo
