@@ -4,7 +4,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -101,31 +100,34 @@ std::string read_input_file(const std::string& path, const std::string& where,
     }
     check_kind_and_size(info, path, where, what, max_bytes);
 
+    // The size fstat gave, then whatever the file grew by since, in small chunks up to the limit
+    // (no speculative buffer: under ASan a 1 MiB spare per file made the OBJ fuzzer 500x slower).
     std::string text(static_cast<size_t>(info.st_size), '\0');
     size_t used = 0;
-    for (;;) {
-        if (used == text.size()) {
-            // Grown since fstat: read on in 1 MiB steps, up to the limit.
-            if (text.size() >= max_bytes) {
-                char probe;
-                const ssize_t more = ::read(fd, &probe, 1);
-                if (more == 0) break;
-                throw InputError(where, quoted(what, path) + " grew past the limit of " +
-                                            std::to_string(max_bytes) + " bytes while read");
+    auto read_some = [&](char* into, size_t room) {
+        for (;;) {
+            const ssize_t got = ::read(fd, into, room);
+            if (got >= 0) return static_cast<size_t>(got);
+            if (errno != EINTR) {
+                throw InputError(where,
+                                 "cannot read " + quoted(what, path) + ": " + std::strerror(errno));
             }
-            text.resize(static_cast<size_t>(
-                std::min<uint64_t>(max_bytes, static_cast<uint64_t>(text.size()) + (1u << 20))));
         }
-        const ssize_t got = ::read(fd, &text[used], text.size() - used);
-        if (got < 0) {
-            if (errno == EINTR) continue;
-            throw InputError(where,
-                             "cannot read " + quoted(what, path) + ": " + std::strerror(errno));
-        }
-        if (got == 0) break;
-        used += static_cast<size_t>(got);
+    };
+    while (used < text.size()) {
+        const size_t got = read_some(&text[used], text.size() - used);
+        if (got == 0) break;  // shrunk since fstat
+        used += got;
     }
     text.resize(used);
+    char chunk[1 << 16];
+    for (size_t got; (got = read_some(chunk, sizeof chunk)) > 0;) {
+        if (text.size() + got > max_bytes) {
+            throw InputError(where, quoted(what, path) + " grew past the limit of " +
+                                        std::to_string(max_bytes) + " bytes while read");
+        }
+        text.append(chunk, got);
+    }
     return text;
 }
 
