@@ -50,16 +50,11 @@ class CliFixture : public ::testing::Test {
 
     // Runs `rayo ARGS` in the folder; the log lives beside it so listings see only rayo's files.
     CommandResult run(const std::string& args) const {
-        const std::filesystem::path log =
-            m_dir.parent_path() / (m_dir.filename().string() + ".log");
+        const std::filesystem::path log = log_path();
         const std::string command = "cd '" + m_dir.string() + "' && '" RAYO_CLI_PATH "' " + args +
                                     " > '" + log.string() + "' 2>&1";
         const int status = std::system(command.c_str());
-        std::ifstream in(log);
-        std::stringstream text;
-        text << in.rdbuf();
-        std::filesystem::remove(log);
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, take_log(log)};
     }
 
     // Runs `rayo ARGS` (one argument per element, no shell) in the folder with SIGINT and
@@ -70,8 +65,7 @@ class CliFixture : public ::testing::Test {
     WatchedResult run_watched(const std::vector<std::string>& args, double limit_seconds,
                               const std::function<bool(pid_t)>& while_running = {},
                               rlim_t file_size_limit_bytes = 0) const {
-        const std::filesystem::path log =
-            m_dir.parent_path() / (m_dir.filename().string() + ".log");
+        const std::filesystem::path log = log_path();
         std::vector<std::string> argv_text{RAYO_CLI_PATH};
         argv_text.insert(argv_text.end(), args.begin(), args.end());
         std::vector<char*> argv;
@@ -116,12 +110,22 @@ class CliFixture : public ::testing::Test {
         result.shell_status = WIFEXITED(status)     ? WEXITSTATUS(status)
                               : WIFSIGNALED(status) ? 128 + WTERMSIG(status)
                                                     : -1;
+        result.output = take_log(log);
+        return result;
+    }
+
+    // The run's log beside the test's folder (so that listings see only rayo's files).
+    std::filesystem::path log_path() const {
+        return m_dir.parent_path() / (m_dir.filename().string() + ".log");
+    }
+
+    // The log's text; the log is removed.
+    static std::string take_log(const std::filesystem::path& log) {
         std::ifstream in(log);
         std::stringstream text;
         text << in.rdbuf();
         std::filesystem::remove(log);
-        result.output = text.str();
-        return result;
+        return text.str();
     }
 
     std::filesystem::path write(const std::string& name, const std::string& text) const {
