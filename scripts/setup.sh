@@ -9,6 +9,7 @@ packages=(
   libopenimageio-dev openimageio-tools libopencolorio-dev
   libglm-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
   libtinyobjloader-dev libtinygltf-dev
+  libopenmpi-dev openmpi-bin
   gnuplot-nox
 )
 if [[ "${RAYO_SETUP_EXTRAS:-}" == *povray* ]]; then packages+=(povray); fi

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "apps/mpi/mpi_tile_distribution.h"
+#include "apps/mpi/mpi_world.h"
 #include "apps/scene/default_scene.h"
 #include "apps/scene/preview.h"
 #include "apps/scene/renderer.h"
@@ -394,6 +396,13 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "  paths cut by contribution   " << c.contribution_cut << "\n"
         << "  throughput                  " << std::fixed << std::setprecision(2) << mrays
         << " Mrays/s\n";
+    for (size_t rank = 0; r.processes.size() > 1 && rank < r.processes.size(); ++rank) {
+        const ProcessWork& w = r.processes[rank];
+        out << "  rank " << std::left << std::setw(23) << rank << std::right << w.tiles
+            << " tiles, " << w.counters.total_rays() << " rays, " << std::fixed
+            << std::setprecision(2)
+            << (w.seconds > 0 ? w.counters.total_rays() / w.seconds / 1e6 : 0.0) << " Mrays/s\n";
+    }
     if (r.radiosity) {
         const RadiosityStats& rs = r.radiosity_stats;
         out << "  radiosity patches           " << r.radiosity_patches << "\n"
@@ -409,14 +418,18 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std::ostream& err) {
+// `rayo render`, in one process or as one rank of several (`distribution` set: only rank 0
+// checks and writes the output and prints; docs/distributed.md).
+int render_command(const std::vector<std::string>& arg_list, std::ostream& out, std::ostream& err,
+                   std::optional<MpiTileDistribution>& distribution) {
     const RenderArgs args = parse_render_args(arg_list);
     const auto total_start = std::chrono::steady_clock::now();
     auto start = total_start;
     SceneDescription d = args.scene_path ? load_scene_file(*args.scene_path, args.load_options)
                                          : make_default_scene();
     const double parse_s = seconds_since(start);
-    if (!args.quiet) {
+    const bool writes_image = MpiWorld::rank() == 0;
+    if (!args.quiet && writes_image) {
         for (const std::string& w : d.warnings) err << "rayo: warning: " << w << "\n";
         if (args.load_options.nff.light_intensity &&
             (!args.scene_path || lower_extension(*args.scene_path) != ".nff")) {
@@ -425,10 +438,15 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
     }
     apply_overrides(args, d);
     const std::string output = args.output ? *args.output : default_output_path(args);
-    check_output(output, args.output_options);  // before the render, not after it
+    if (writes_image) check_output(output, args.output_options);  // before the render
 
     const bool progress = !args.quiet && ProgressReporter::stderr_is_terminal();
-    const RenderResult result = render_scene(d, args.threads.value_or(0), progress);
+    const int threads = args.threads.value_or(0);
+    if (MpiWorld::distributed())
+        distribution.emplace(threads > 0 ? threads : default_thread_count());
+    const RenderResult result =
+        render_scene(d, threads, progress, distribution ? &*distribution : nullptr);
+    if (!writes_image) return 0;
 
     OutputOptions options = args.output_options;
     const CameraDesc& cam = d.scene.camera;
@@ -444,6 +462,9 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
         options.metadata["rayo:spp"] = std::to_string(d.settings.spp);
     }
     options.metadata["rayo:threads"] = std::to_string(result.threads);
+    if (result.processes.size() > 1) {
+        options.metadata["rayo:ranks"] = std::to_string(result.processes.size());
+    }
     options.metadata["rayo:render_seconds"] = std::to_string(result.render_seconds);
     start = std::chrono::steady_clock::now();
     write_image(result.film, output, options);
@@ -465,7 +486,11 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
         out << "rayo: " << output << " " << cam.width << "x" << cam.height << " "
             << (d.settings.aa == AntiAliasing::Adaptive ? "adaptive"
                                                         : std::to_string(d.settings.spp) + "spp")
-            << " " << result.threads << " threads | parse " << format_duration(parse_s) << ", bvh "
+            << " " << result.threads << " threads"
+            << (result.processes.size() > 1
+                    ? " x " + std::to_string(result.processes.size()) + " ranks"
+                    : std::string())
+            << " | parse " << format_duration(parse_s) << ", bvh "
             << format_duration(result.bvh_seconds) << ", render "
             << format_duration(result.render_seconds) << ", write " << format_duration(write_s)
             << " | rays " << human_count(c.total_rays()) << " (camera " << human_count(c.camera)
@@ -484,6 +509,43 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
         }
     }
     return 0;
+}
+
+// The exit status and the message line of an exception thrown by a command.
+int describe_error(std::exception_ptr error, std::string& message) {
+    try {
+        std::rethrow_exception(error);
+    } catch (const UsageError& e) {
+        message = std::string("rayo: error: ") + e.what() + "\n";
+        return kExitUsage;
+    } catch (const std::bad_alloc&) {
+        message = "rayo: error: out of memory\n";
+        return kExitInput;
+    } catch (const std::exception& e) {  // InputError and every other failure
+        message = std::string("rayo: error: ") + e.what() + "\n";
+        return kExitInput;
+    }
+}
+
+int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std::ostream& err) {
+    std::optional<MpiTileDistribution> distribution;
+    if (!MpiWorld::distributed()) return render_command(arg_list, out, err, distribution);
+    // One rank of several: an error before the ranks exchange tiles is agreed on, so that it is
+    // printed once (by the lowest failing rank) and every rank exits with its status. After
+    // that only rank 0 runs (writing the image); errors during the exchange end all ranks.
+    try {
+        return render_command(arg_list, out, err, distribution);
+    } catch (const PeerFailure& failure) {
+        return failure.exit_code;
+    } catch (...) {
+        std::string message;
+        const int code = describe_error(std::current_exception(), message);
+        if (distribution && distribution->agreed()) {
+            err << message;
+            return code;
+        }
+        return MpiWorld::agree_on_failure(true, message, code, err);
+    }
 }
 
 // `rayo texture NAME [-o OUT] [--size WxH] [--scale S] [--seed N]` (seed 003 ch. 3 maps).
@@ -702,18 +764,11 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
         if (command == "texture") return run_texture(args, out);
         if (command == "preview") return run_preview(args, out, err);
         throw UsageError("unknown command '" + command + "' (see rayo --help)");
-    } catch (const UsageError& e) {
-        err << "rayo: error: " << e.what() << "\n";
-        return kExitUsage;
-    } catch (const InputError& e) {
-        err << "rayo: error: " << e.what() << "\n";
-        return kExitInput;
-    } catch (const std::bad_alloc&) {
-        err << "rayo: error: out of memory\n";
-        return kExitInput;
-    } catch (const std::exception& e) {
-        err << "rayo: error: " << e.what() << "\n";
-        return kExitInput;
+    } catch (...) {
+        std::string message;
+        const int code = describe_error(std::current_exception(), message);
+        err << message;
+        return code;
     }
 }
 

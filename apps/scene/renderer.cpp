@@ -67,7 +67,8 @@ int default_thread_count() {
     return tbb::info::default_concurrency();
 }
 
-RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress) {
+RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress,
+                          TileDistribution* distribution) {
     const Camera camera = Camera::create(description.scene.camera, description.source + "#/camera");
     check_material_ids(description);
     RenderResult result;
@@ -114,7 +115,8 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
 
     const WhittedIntegrator integrator(accel, description.shading, description.settings.whitted,
                                        radiosity.get());
-    result.film = Film(camera.width(), camera.height());
+    const bool writes_image = distribution == nullptr || distribution->writes_image();
+    if (writes_image) result.film = Film(camera.width(), camera.height());
     TileSettings tiles;
     tiles.spp = description.settings.spp;
     tiles.tile_size = description.settings.tile_size;
@@ -130,8 +132,17 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     start = std::chrono::steady_clock::now();
     {
         ProgressReporter progress(static_cast<uint64_t>(camera.width()) * camera.height(),
-                                  "rendering", show_progress);
-        result.counters = render_tiles(camera, integrator, tiles, result.film, &progress);
+                                  "rendering", show_progress && writes_image);
+        if (distribution == nullptr) {
+            result.counters = render_tiles(camera, integrator, tiles, result.film, &progress);
+        } else {
+            const TileGrid grid(camera.width(), camera.height(), tiles.tile_size);
+            const auto render_chunk = [&](const std::vector<int>& list, TileSink& sink) {
+                return render_tiles(camera, integrator, tiles, sink, nullptr, list);
+            };
+            result.counters = distribution->render(grid, {}, render_chunk, result.film, &progress);
+            result.processes = distribution->work();
+        }
     }
     result.render_seconds = seconds_since(start);
     return result;

@@ -5,6 +5,7 @@
 #include "apps/scene/sphere_method_choice.h"
 #include "core/film.h"
 #include "core/stats.h"
+#include "core/tile_distribution.h"
 
 namespace rayo {
 
@@ -21,10 +22,15 @@ struct RenderResult {
     bool radiosity = false;
     size_t radiosity_patches = 0;
     RadiosityStats radiosity_stats;
+    // Under a distribution of several processes: what each did (docs/distributed.md).
+    std::vector<ProcessWork> processes;
 };
 
-// threads = 0: all cores. Throws InputError for an invalid camera.
-RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress);
+// threads = 0: all cores. Throws InputError for an invalid camera. With a `distribution`, the
+// tiles are shared out among its processes (every process loads the scene and builds the BVH);
+// the film is filled, and the progress shown, only where the distribution writes the image.
+RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress,
+                          TileDistribution* distribution = nullptr);
 
 // The thread count TBB uses when none is given.
 int default_thread_count();

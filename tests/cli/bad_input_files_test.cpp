@@ -288,7 +288,9 @@ TEST_F(BadInputFiles, SignalsLeaveNoFileAndExitWith128PlusTheSignal) {
                             return true;
                         });
         EXPECT_EQ(r.shell_status, 130) << "delay " << delay << " s\n" << r.output;
-        if (delay >= 0.0) EXPECT_EQ(r.exit_code, 130) << "delay " << delay << " s: not handled";
+        if (delay >= 0.0) {
+            EXPECT_EQ(r.exit_code, 130) << "delay " << delay << " s: not handled";
+        }
         EXPECT_EQ(listing(), std::set<std::string>{"scene.nff"}) << "delay " << delay << " s";
     }
 }

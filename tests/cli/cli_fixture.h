@@ -49,10 +49,11 @@ class CliFixture : public ::testing::Test {
     void TearDown() override { std::filesystem::remove_all(m_dir); }
 
     // Runs `rayo ARGS` in the folder; the log lives beside it so listings see only rayo's files.
-    CommandResult run(const std::string& args) const {
+    // `launcher` (e.g. "mpirun -np 3") goes before the executable.
+    CommandResult run(const std::string& args, const std::string& launcher = "") const {
         const std::filesystem::path log = log_path();
-        const std::string command = "cd '" + m_dir.string() + "' && '" RAYO_CLI_PATH "' " + args +
-                                    " > '" + log.string() + "' 2>&1";
+        const std::string command = "cd '" + m_dir.string() + "' && " + launcher + " '" +
+                                    RAYO_CLI_PATH "' " + args + " > '" + log.string() + "' 2>&1";
         const int status = std::system(command.c_str());
         return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, take_log(log)};
     }
