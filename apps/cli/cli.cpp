@@ -424,6 +424,12 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
         }
     }
     apply_overrides(args, d);
+    if (!args.quiet && d.settings.gi == GlobalIllumination::Radiosity &&
+        !d.scene.shapes.of<Quadric>().empty()) {
+        err << "rayo: warning: radiosity: " << d.scene.shapes.of<Quadric>().size()
+            << " general quadric(s) have no tessellation: they occlude but neither shoot nor "
+               "receive (docs/radiosity.md)\n";
+    }
     const std::string output = args.output ? *args.output : default_output_path(args);
     check_output(output, args.output_options);  // before the render, not after it
 
