@@ -245,11 +245,11 @@ SceneDescription sphere_under_emitter(const std::string& gi, const Vec3& at, con
     };
     return load(R"({"rayo": 1,
       "camera": {"eye": )" +
-                vec(eye) + R"(, "look_at": )" + vec(at) + R"(, "vfov": 1,
+                vec(eye) + R"(, "look_at": )" + vec(at) + R"(, "up": [0, 0, 1], "vfov": 1,
                  "width": 3, "height": 3},
       "render": {"gi": ")" +
                 gi + R"("}, "ambient_light": 0,
-      "radiosity": {"patch_size": 0.08, "form_factors": "analytic", "rays": 16},
+      "radiosity": {"patch_size": 0.1, "form_factors": "analytic", "rays": 16},
       "materials": {"white": {"kd": 0.8, "ka": 0},
                     "light": {"kd": 0, "ka": 0, "emission": [1, 1, 1]}},
       "objects": [
@@ -261,7 +261,7 @@ SceneDescription sphere_under_emitter(const std::string& gi, const Vec3& at, con
 TEST(RadiosityScene, DiffuseSphereNextToAnEmitterReceivesLight) {
     // At a point p of the sphere (normal n) that sees the whole emitter, the solution reflects
     // ρ·L·F(p → emitter), F the closed-form point-to-polygon factor; the vertex interpolation
-    // over 0.08 patches is within 3% of it. Without radiosity the sphere is black (no lights,
+    // over 0.1 patches is within 3% of it. Without radiosity the sphere is black (no lights,
     // no ambient); its underside stays black with radiosity too.
     const Vec3 n = glm::normalize(Vec3(0.0f, 1.0f, 1.0f));
     const Vec3 p = 0.5f * n;
@@ -283,7 +283,8 @@ TEST(RadiosityScene, DiffuseSphereNextToAnEmitterReceivesLight) {
 TEST(RadiosityScene, DiskAndSphereAreaLightsShootLikeTheirDirectLight) {
     // A floor under a disk or a sphere area light, seen straight down: the solve (the light's
     // tessellation shooting) gives the floor what the Whitted pass gives it from the light's
-    // samples, kd·E/π.
+    // samples, kd·E/π, less the power between the tessellation's chords (1% at 26 cells
+    // around) and the vertex averaging's.
     for (const char* light : {R"("shape": "disk", "center": [0, 1, 0], "normal": [0, -1, 0],
                                  "radius": 0.4)",
                               R"("shape": "sphere", "center": [0, 1.2, 0], "radius": 0.4)"}) {
@@ -292,11 +293,11 @@ TEST(RadiosityScene, DiskAndSphereAreaLightsShootLikeTheirDirectLight) {
           "camera": {"eye": [0, 0.5, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "vfov": 2,
                      "width": 4, "height": 4},
           "render": {"gi": "GI"}, "ambient_light": 0,
-          "radiosity": {"patch_size": 0.2, "form_factors": "analytic", "rays": 16},
+          "radiosity": {"patch_size": 0.1, "form_factors": "analytic", "rays": 16},
           "materials": {"default": {"kd": 0.5, "ka": 0}},
           "lights": [{"type": "area", )") +
                                  light + R"(, "samples": 1024, "intensity": 2}],
-          "objects": [{"type": "polygon", "vertices": [[-1,0,-1], [-1,0,1], [1,0,1], [1,0,-1]]}]})";
+          "objects": [{"type": "polygon", "vertices": [[-0.3,0,-0.3], [-0.3,0,0.3], [0.3,0,0.3], [0.3,0,-0.3]]}]})";
         auto with = [&](const char* gi) {
             std::string t = text;
             t.replace(t.find("GI"), 2, gi);
@@ -304,7 +305,7 @@ TEST(RadiosityScene, DiskAndSphereAreaLightsShootLikeTheirDirectLight) {
         };
         const float whitted = with("none");
         EXPECT_GT(whitted, 0.05f);
-        EXPECT_NEAR(with("radiosity"), whitted, 0.04f * whitted);
+        EXPECT_NEAR(with("radiosity"), whitted, 0.025f * whitted);
     }
 }
 
@@ -320,9 +321,10 @@ TEST(RadiosityScene, FieldShowsTheSpheresPatchesAndInterpolatesItsVertices) {
     SurfaceHit hit;
     hit.shape = Shapes::index_of<Sphere>();
     hit.primitive = 0;
-    // Every patch's B: red its height above the sphere's centre, green its index. The smooth
-    // view interpolates the height (within the patches' size), the flat one shows the index of
-    // the patch that holds the hit.
+    // Every patch's B: red its centroid's height above the sphere's centre, green its index.
+    // The smooth view interpolates the height (within the patches' size: the vertex averages
+    // lie below the surface near the poles), the flat one shows the index of the patch that
+    // holds the hit.
     std::vector<DVec3> b(patches.size());
     for (size_t i = 0; i < patches.size(); ++i) {
         const Vec3 c =
@@ -338,7 +340,7 @@ TEST(RadiosityScene, FieldShowsTheSpheresPatchesAndInterpolatesItsVertices) {
             hit.position = Vec3(1.0f, 2.0f, 0.0f) + 0.5f * n;
             field.set_flat(false);
             ASSERT_TRUE(field.reflected(hit, r));
-            EXPECT_NEAR(r.x, 0.5f * n.y, 0.03f);
+            EXPECT_NEAR(r.x, 0.5f * n.y, 0.06f);  // the patches' height differences: 0.19
             field.set_flat(true);
             ASSERT_TRUE(field.reflected(hit, r));
             // The patch whose index came back holds the hit's radial projection (to 0.02 rad:
