@@ -74,7 +74,7 @@ render options:
                            the absolute RGBA differences), a number >= 0 [0.3]
   --aa-depth N             adaptive: at most N subdivisions per pixel, 0..8 [3]
   --gi G                   global illumination: none, or radiosity (a pre-pass over the
-                           meshes' patches, the scene's "radiosity" settings; docs/radiosity.md)
+                           surfaces' patches, the scene's "radiosity" settings; docs/radiosity.md)
                            [scene's render.gi, default none]
   --gi-view V              radiosity: smooth (vertex colours, default) or patches (flat)
   --gi-log FILE            radiosity: write the unshot energy after every shot (CSV)
