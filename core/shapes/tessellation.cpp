@@ -37,6 +37,22 @@ uint32_t cells_for(double length, const TessellationOptions& options, uint32_t l
     return static_cast<uint32_t>(n);
 }
 
+// The largest distance between a cell side's chord and the surface over its midpoint, along s
+// (or t) with n cells that way, sampled on 17 lines across: the chord error of that direction.
+double chord_error(const SurfacePiece& piece, uint32_t n, bool along_s) {
+    constexpr int kLines = 16;
+    double worst = 0.0;
+    for (int line = 0; line <= kLines; ++line) {
+        const double fixed = static_cast<double>(line) / kLines;
+        auto at = [&](double u) { return along_s ? piece.point(u, fixed) : piece.point(fixed, u); };
+        for (uint32_t k = 0; k < n; ++k) {
+            const double a = static_cast<double>(k) / n, b = static_cast<double>(k + 1) / n;
+            worst = std::max(worst, glm::length(at(0.5 * (a + b)) - 0.5 * (at(a) + at(b))));
+        }
+    }
+    return worst;
+}
+
 double wrap_angle(double y, double x) {
     const double s = std::atan2(y, x) / kTwoPi;
     return s < 0.0 ? s + 1.0 : s;
@@ -112,6 +128,23 @@ void tessellate(const SurfacePieces& pieces, const TessellationOptions& options,
         grid.nu = cells_for(along_s, options, curved ? options.min_around : 1);
         grid.nv = cells_for(along_t, options,
                             piece.kind == SurfacePiece::Kind::Sphere ? options.min_along : 1);
+        if (options.max_chord > 0.0f) {
+            // The chord error of a side falls as 1/n²: each direction gets half the budget
+            // (a triangle's deviation adds both), a few passes for the sampling.
+            const double budget = 0.5 * options.max_chord;
+            for (int pass = 0; pass < 4; ++pass) {
+                bool refined = false;
+                for (const bool along_s : {true, false}) {
+                    uint32_t& n = along_s ? grid.nu : grid.nv;
+                    const double error = chord_error(piece, n, along_s);
+                    if (error <= budget || n >= options.max_cells) continue;
+                    const double wanted = std::ceil(n * std::sqrt(error / budget));
+                    n = static_cast<uint32_t>(std::min<double>(wanted, options.max_cells));
+                    refined = true;
+                }
+                if (!refined) break;
+            }
+        }
         grid.first_vertex = static_cast<uint32_t>(out.positions.size());
         grid.first_triangle = static_cast<uint32_t>(out.slot.size());
         for (uint32_t j = 0; j <= grid.nv; ++j) {

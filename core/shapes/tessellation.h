@@ -66,9 +66,12 @@ struct TessellatedMesh {
 
 // The parameters of a tessellation: no triangle edge longer than `max_edge` (0: no limit),
 // at least `min_around` cells around a curved piece (revolution, sphere, cap) and `min_along`
-// along a sphere's meridians.
+// along a sphere's meridians, and, when `max_chord` > 0, cells fine enough that the surface
+// lies within max_chord of the triangles (the chord error: a mesh form of the shape within an
+// error budget; issue 11), at most `max_cells` per direction of a piece in any case.
 struct TessellationOptions {
     float max_edge = 0.0f;
+    float max_chord = 0.0f;
     uint32_t min_around = 16;
     uint32_t min_along = 8;
     uint32_t max_cells = 256;  // per direction of a piece

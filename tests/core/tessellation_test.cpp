@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -191,6 +192,34 @@ TEST(Tessellation, SphereCountsAndArea) {
                          static_cast<double>(mesh.triangles.size());
     EXPECT_GT(ratio, 3.5);
     EXPECT_LT(ratio, 4.5);
+}
+
+TEST(Tessellation, ChordErrorStaysWithinItsBudget) {
+    // A circle of radius r cut into n chords deviates r·(1 − cos(π/n)) from them: a sphere of
+    // radius 1 within 1e-3 needs n ≥ π/acos(1 − 1e-3) ≈ 70.2 around; half the budget per
+    // direction asks √2 times that (99), the ceiling a little more. A cylinder's side is
+    // straight along its axis: one cell that way.
+    SurfacePieces sphere;
+    Sphere{Vec3(0.0f), 1.0f, 0}.pieces(sphere);
+    TessellationOptions options;
+    options.max_chord = 1e-3f;
+    TessellatedMesh mesh;
+    tessellate(sphere, options, mesh);
+    const double least = M_PI / std::acos(1.0 - 1e-3);
+    EXPECT_GE(mesh.grids[0].nu, least);
+    EXPECT_LE(mesh.grids[0].nu, 1.6 * least);
+    for (const float bulge : mesh.bulge) EXPECT_LE(bulge, 1e-3f);
+    EXPECT_GT(*std::max_element(mesh.bulge.begin(), mesh.bulge.end()), 0.25e-3f);
+
+    Cylinder cylinder;
+    cylinder.radius = 2.0f;
+    cylinder.capped = false;
+    SurfacePieces side;
+    cylinder.pieces(side);
+    tessellate(side, options, mesh);
+    EXPECT_EQ(mesh.grids[0].nv, 1u);
+    EXPECT_GE(mesh.grids[0].nu, M_PI / std::acos(1.0 - 1e-3 / 2.0));
+    for (const float bulge : mesh.bulge) EXPECT_LE(bulge, 1e-3f);
 }
 
 TEST(Tessellation, CellPointInterpolatesWithinTheTriangleHoldingThePoint) {
