@@ -142,7 +142,7 @@ double ray_form_factor(const Accel& accel, const RadiosityPatch& receiver,
         const double f_point =
             point_polygon_form_factor(DVec3(y), DVec3(receiver.normal), polygon, 3);
         if (f_point <= 0.0) continue;
-        const Vec3 origin = y + receiver.normal * offset;
+        const Vec3 origin = y + receiver.normal * (offset + receiver.lift);
         double seen = 0.0, total = 0.0;
         for (int first = 0; first < per_point; first += kBatch) {
             int pending = 0;
@@ -150,7 +150,8 @@ double ray_form_factor(const Accel& accel, const RadiosityPatch& receiver,
                 const glm::vec2 ux =
                     stratum(b, gx, (per_point + gx - 1) / gx, sample_uniform(seed, a, b + 1, 0),
                             sample_uniform(seed, a, b + 1, 1));
-                const Vec3 x = triangle_point(source, std::min(ux.x, 1.0f), std::min(ux.y, 1.0f));
+                Vec3 x = triangle_point(source, std::min(ux.x, 1.0f), std::min(ux.y, 1.0f));
+                if (source.lift > 0.0f) x += source.normal * source.lift;
                 const Vec3 to_x = x - origin;
                 const float r2 = glm::dot(to_x, to_x);
                 if (r2 <= 0.0f) continue;

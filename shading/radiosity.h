@@ -24,6 +24,10 @@ struct RadiosityPatch {
     float area = 0.0f;
     Vec3 emission{0.0f};     // Ei (radiance)
     Vec3 reflectance{0.0f};  // ρi, the material's kd
+    // How far the surface the patch stands for lies above it (a tessellated analytic shape's
+    // chord, 0 for meshes): the form-factor rays start and end that far out along the normal,
+    // else the analytic shape the patch cuts through would hide it.
+    float lift = 0.0f;
 };
 RadiosityPatch make_patch(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& emission,
                           const Vec3& reflectance);

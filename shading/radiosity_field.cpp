@@ -34,6 +34,13 @@ RadiosityField::RadiosityField(const Scene& scene, const std::vector<Material>& 
             hi = glm::max(hi, p);
         }
     }
+    scene.shapes.for_each([&](const auto& shapes) {
+        for (const auto& shape : shapes) {
+            const Bounds3 b = shape.bounds();
+            lo = glm::min(lo, b.lower);
+            hi = glm::max(hi, b.upper);
+        }
+    });
     const float cell = std::max(max_abs_component(hi - lo), 1e-20f) * 1e-6f;
     std::map<std::array<int64_t, 6>, uint32_t> shared;
     auto vertex_id = [&](const Vec3& p, const Vec3& n) {
@@ -90,6 +97,40 @@ RadiosityField::RadiosityField(const Scene& scene, const std::vector<Material>& 
             }
         }
     }
+
+    // Analytic shapes: their tessellation's triangles are patches as they are; the grid points
+    // are shared by position and the surface's normal there (a sphere's seam and poles are one
+    // vertex each, a box's edges are not).
+    TessellationOptions options;
+    options.max_edge = patch_size;
+    m_shape_cuts.resize(AnalyticShapes::kCount);
+    scene.shapes.for_each([&](const auto& shapes) {
+        using S = ShapeOf<decltype(shapes)>;
+        std::vector<ShapeCut>& cuts = m_shape_cuts[Shapes::index_of<S>()];
+        cuts.resize(shapes.size());
+        for (size_t index = 0; index < shapes.size(); ++index) {
+            ShapeCut& cut = cuts[index];
+            shapes[index].pieces(cut.pieces);
+            tessellate(cut.pieces, options, cut.mesh);
+            cut.first_patch = static_cast<uint32_t>(m_patches.size());
+            cut.first_vertex = static_cast<uint32_t>(m_vertex_of.size());
+            for (size_t v = 0; v < cut.mesh.positions.size(); ++v) {
+                m_vertex_of.push_back(vertex_id(cut.mesh.positions[v], cut.mesh.normals[v]));
+            }
+            const Material& material = materials[shapes[index].material];
+            for (size_t n = 0; n < cut.mesh.triangles.size(); ++n) {
+                const auto& tri = cut.mesh.triangles[n];
+                RadiosityPatch patch =
+                    make_patch(cut.mesh.positions[tri[0]], cut.mesh.positions[tri[1]],
+                               cut.mesh.positions[tri[2]], material.emission, material.kd);
+                // A little beyond the sampled chord error (its maximum may lie between the
+                // samples), and past the float rounding of the shape's intersection.
+                patch.lift =
+                    1.25f * cut.mesh.bulge[n] + 1e-5f * max_abs_component(patch.vertices[0]);
+                m_patches.push_back(patch);
+            }
+        }
+    });
 }
 
 void RadiosityField::set_solution(const std::vector<DVec3>& radiosity) {
@@ -123,16 +164,48 @@ void RadiosityField::set_solution(const std::vector<DVec3>& radiosity) {
             }
         }
     }
+    for (const std::vector<ShapeCut>& cuts : m_shape_cuts) {
+        for (const ShapeCut& cut : cuts) {
+            for (size_t n = 0; n < cut.mesh.triangles.size(); ++n) {
+                for (const uint32_t corner : cut.mesh.triangles[n]) {
+                    const uint32_t v = m_vertex_of[cut.first_vertex + corner];
+                    sum[v] += DVec3(m_patch_radiance[cut.first_patch + n]);
+                    ++count[v];
+                }
+            }
+        }
+    }
     m_vertex_radiance.assign(m_vertex_count, Vec3(0.0f));
     for (uint32_t v = 0; v < m_vertex_count; ++v) {
         if (count[v] > 0) m_vertex_radiance[v] = Vec3(sum[v] / static_cast<double>(count[v]));
     }
 }
 
-bool RadiosityField::reflected(const SurfaceHit& hit, Vec3& radiance) const {
-    if (hit.shape != kTriangleShape || hit.mesh >= m_cuts.size() || m_patch_radiance.empty()) {
+bool RadiosityField::shape_reflected(const SurfaceHit& hit, Vec3& radiance) const {
+    if (hit.shape >= m_shape_cuts.size() || hit.primitive >= m_shape_cuts[hit.shape].size()) {
         return false;
     }
+    const ShapeCut& cut = m_shape_cuts[hit.shape][hit.primitive];
+    PiecePoint where;
+    if (cut.mesh.triangles.empty() || !locate(cut.pieces, hit.position, where)) return false;
+    const CellPoint cell = cell_point(cut.mesh, where);
+    if (cell.triangle == TessellatedMesh::kNoTriangle) return false;
+    if (m_flat) {
+        radiance = m_patch_radiance[cut.first_patch + cell.triangle];
+        return true;
+    }
+    radiance = Vec3(0.0f);
+    for (int c = 0; c < 3; ++c) {
+        radiance +=
+            cell.weights[c] * m_vertex_radiance[m_vertex_of[cut.first_vertex + cell.vertices[c]]];
+    }
+    return true;
+}
+
+bool RadiosityField::reflected(const SurfaceHit& hit, Vec3& radiance) const {
+    if (m_patch_radiance.empty()) return false;
+    if (hit.shape != kTriangleShape) return shape_reflected(hit, radiance);
+    if (hit.mesh >= m_cuts.size()) return false;
     const TriangleMesh& mesh = m_scene.meshes[hit.mesh];
     const auto& tri = mesh.triangles[hit.primitive];
     const Vec3 a = mesh.positions[tri[0]];

@@ -1,11 +1,14 @@
 #pragma once
 // The radiosity solution as the renderer sees it (seed 004: vertex colours by averaging the
-// patches around each vertex): the scene's triangle meshes cut into patches, and after the solve
-// a radiance per patch vertex, interpolated across each patch. docs/radiosity.md.
+// patches around each vertex): the scene's triangle meshes cut into patches and its analytic
+// shapes tessellated into them (for the solve only: the renderer still intersects the shapes),
+// and after the solve a radiance per patch vertex, interpolated across each patch.
+// docs/radiosity.md.
 #include <cstdint>
 #include <vector>
 
 #include "core/scene.h"
+#include "core/shapes/tessellation.h"
 #include "core/surface_hit.h"
 #include "shading/material.h"
 #include "shading/radiosity.h"
@@ -16,7 +19,9 @@ class RadiosityField {
   public:
     // Cuts every triangle of every mesh into k×k congruent triangles (k the least with edges no
     // longer than patch_size; 1 when patch_size is 0), with the emission and reflectance (kd) of
-    // its material. Analytic shapes (spheres, boxes, ...) are not in the solve.
+    // its material; every analytic shape is tessellated (core/shapes/tessellation.h) with cells
+    // no longer than patch_size (0: 16 cells around, 8 along a sphere's meridians), one patch
+    // per triangle. General quadrics have no tessellation: they are not in the solve.
     RadiosityField(const Scene& scene, const std::vector<Material>& materials, float patch_size);
 
     const std::vector<RadiosityPatch>& patches() const { return m_patches; }
@@ -28,18 +33,31 @@ class RadiosityField {
     // Flat patches instead of interpolated vertices (the `--gi-view patches` debug view).
     void set_flat(bool flat) { m_flat = flat; }
 
-    // The reflected radiance at a triangle hit (interpolated from the patch's vertices); false
-    // for other shapes and before set_solution. The caller asks only for the front side.
+    // The reflected radiance at a triangle hit or an analytic shape's hit (interpolated from
+    // the vertices of the patch that holds it: for an analytic shape, the tessellation's
+    // triangle over the same (s, t) of its surface); false for shapes that have no patches and
+    // before set_solution. The caller asks only for the front side.
     bool reflected(const SurfaceHit& hit, Vec3& radiance) const;
 
   private:
+    // An analytic shape's tessellation; its triangle n is patch first_patch + n, its grid point
+    // v the shared vertex m_vertex_of[first_vertex + v].
+    struct ShapeCut {
+        SurfacePieces pieces;
+        TessellatedMesh mesh;
+        uint32_t first_patch = 0;
+        uint32_t first_vertex = 0;
+    };
+    bool shape_reflected(const SurfaceHit& hit, Vec3& radiance) const;
+
     struct TriangleCut {
         uint32_t k = 1;             // subdivisions per edge
         uint32_t first_patch = 0;   // k² patches from here
         uint32_t first_vertex = 0;  // (k+1)(k+2)/2 entries of m_vertex_of from here
     };
     const Scene& m_scene;
-    std::vector<std::vector<TriangleCut>> m_cuts;  // per mesh, per triangle
+    std::vector<std::vector<TriangleCut>> m_cuts;     // per mesh, per triangle
+    std::vector<std::vector<ShapeCut>> m_shape_cuts;  // per shape type, per shape
     std::vector<RadiosityPatch> m_patches;
     std::vector<uint32_t> m_vertex_of;  // grid point -> shared vertex
     uint32_t m_vertex_count = 0;

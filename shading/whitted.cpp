@@ -120,6 +120,12 @@ WhittedIntegrator::LightSide WhittedIntegrator::light_sample(const ShadingPoint&
     to_light = sample.direction;
     const float light_distance = sample.distance;
     light_radiance = sample.radiance / sample.pdf;
+    // An area light is radiometric (radiance L, so the samples average to its irradiance E):
+    // its light on a Lambertian surface is kd·E/π, the same the radiosity solve gives it
+    // (docs/radiosity.md, "The π of area lights"). Point and directional lights keep seed 000's
+    // Il, with no 1/π. The whole Phong term is scaled, so the highlight keeps its ratio to the
+    // diffuse light.
+    if (std::holds_alternative<AreaLight>(light)) light_radiance *= 1.0f / kPi;
     const int count = light_sample_count(light);
     if (count > 1) light_radiance /= static_cast<float>(count);
     // Lights behind the surface (as seen from the arriving side) contribute nothing, unless the

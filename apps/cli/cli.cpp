@@ -76,7 +76,7 @@ render options:
                            the absolute RGBA differences), a number >= 0 [0.3]
   --aa-depth N             adaptive: at most N subdivisions per pixel, 0..8 [3]
   --gi G                   global illumination: none, or radiosity (a pre-pass over the
-                           meshes' patches, the scene's "radiosity" settings; docs/radiosity.md)
+                           surfaces' patches, the scene's "radiosity" settings; docs/radiosity.md)
                            [scene's render.gi, default none]
   --gi-view V              radiosity: smooth (vertex colours, default) or patches (flat)
   --gi-log FILE            radiosity: write the unshot energy after every shot (CSV)
@@ -437,6 +437,12 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         }
     }
     apply_overrides(args, d);
+    if (!args.quiet && d.settings.gi == GlobalIllumination::Radiosity &&
+        !d.scene.shapes.of<Quadric>().empty()) {
+        err << "rayo: warning: radiosity: " << d.scene.shapes.of<Quadric>().size()
+            << " general quadric(s) have no tessellation: they occlude but neither shoot nor "
+               "receive (docs/radiosity.md)\n";
+    }
     const std::string output = args.output ? *args.output : default_output_path(args);
     if (writes_image) check_output(output, args.output_options);  // before the render
 

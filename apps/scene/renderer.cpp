@@ -87,9 +87,10 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     result.bvh_seconds = seconds_since(start);
     result.primitives = accel.primitive_count();
 
-    // Radiosity (seed 004), the first of two passes: the meshes' patches exchange light through
-    // the accel's occlusion rays; the second pass below shows the solution on diffuse surfaces
-    // and traces mirrors and glass through to it.
+    // Radiosity (seed 004), the first of two passes: the patches of the meshes and of the
+    // tessellated analytic shapes exchange light through the accel's occlusion rays; the second
+    // pass below shows the solution on diffuse surfaces and traces mirrors and glass through to
+    // it.
     std::unique_ptr<RadiosityField> radiosity;
     if (description.settings.gi == GlobalIllumination::Radiosity) {
         const RadiositySettings& rs = description.settings.radiosity;

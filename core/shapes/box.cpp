@@ -115,4 +115,25 @@ void Box::outline(Outline& out) const {
     }
 }
 
+void Box::pieces(SurfacePieces& out) const {
+    // Six faces: for axis a, the face at min (outward −a) and at max (outward +a), spanned by
+    // the box's extents along the two other axes.
+    const DVec3 lo(min), hi(max);
+    for (int a = 0; a < 3; ++a) {
+        const int b = (a + 1) % 3, c = (a + 2) % 3;
+        for (int side = 0; side < 2; ++side) {
+            SurfacePiece piece;
+            piece.kind = SurfacePiece::Kind::Quad;
+            piece.origin = lo;
+            piece.origin[a] = side ? hi[a] : lo[a];
+            DVec3 e1(0.0), e2(0.0), n(0.0);
+            e1[b] = hi[b] - lo[b];
+            e2[c] = hi[c] - lo[c];
+            n[a] = side ? 1.0 : -1.0;
+            piece.frame = glm::dmat3(e1, e2, n);
+            out.push_back(piece);
+        }
+    }
+}
+
 }  // namespace rayo

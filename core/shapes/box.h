@@ -8,6 +8,7 @@
 #include "core/shapes/outline.h"
 #include "core/shapes/shape.h"
 #include "core/shapes/shape_fields.h"
+#include "core/shapes/tessellation.h"
 
 namespace rayo {
 
@@ -32,6 +33,8 @@ struct Box {
     void parameterization(const Vec3& position, SurfaceHit& out) const;
     // The twelve edges.
     void outline(Outline& out) const;
+    // Its surface as parametric pieces for tessellation (core/shapes/tessellation.h).
+    void pieces(SurfacePieces& out) const;
 
     // The slab interval [t_enter, t_exit] and the faces' outward normals there; false when
     // the line misses the box.

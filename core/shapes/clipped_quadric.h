@@ -17,6 +17,7 @@
 #include "core/math.h"
 #include "core/shapes/outline.h"
 #include "core/shapes/shape.h"
+#include "core/shapes/tessellation.h"
 
 namespace rayo {
 

@@ -167,4 +167,20 @@ void Cone::outline(Outline& out) const {
     }
 }
 
+void Cone::pieces(SurfacePieces& out) const {
+    // The open side: ρ(z) = r0 + k·z along the axis, so ρ² = r0² + 2·r0·k·z + k²·z².
+    const ConeFrame f = make_cone_frame(*this);
+    if (!(f.height > 0.0)) return;
+    SurfacePiece piece;
+    piece.kind = SurfacePiece::Kind::Revolution;
+    piece.origin = f.base;
+    DVec3 u, v;
+    perpendicular_frame(f.axis, u, v);
+    piece.frame = glm::dmat3(u, v, f.axis);
+    piece.z0 = 0.0;
+    piece.z1 = f.height;
+    piece.r2 = {f.base_radius * f.base_radius, 2.0 * f.base_radius * f.slope, f.slope * f.slope};
+    out.push_back(piece);
+}
+
 }  // namespace rayo

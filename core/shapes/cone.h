@@ -8,6 +8,7 @@
 #include "core/shapes/outline.h"
 #include "core/shapes/shape.h"
 #include "core/shapes/shape_fields.h"
+#include "core/shapes/tessellation.h"
 
 namespace rayo {
 
@@ -54,6 +55,8 @@ struct Cone {
     void parameterization(const Vec3& position, SurfaceHit& out) const;
     // Both rims and the two generators along which rays from the eye graze the surface.
     void outline(Outline& out) const;
+    // Its surface as parametric pieces for tessellation (core/shapes/tessellation.h).
+    void pieces(SurfacePieces& out) const;
 };
 
 ConeFrame make_cone_frame(const Cone& cone);

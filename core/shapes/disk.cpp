@@ -68,4 +68,17 @@ void Disk::outline(Outline& out) const {
     out.add_circle(DVec3(center), glm::normalize(DVec3(normal)), radius);
 }
 
+void Disk::pieces(SurfacePieces& out) const {
+    SurfacePiece piece;
+    piece.kind = SurfacePiece::Kind::Cap;
+    piece.origin = DVec3(center);
+    DVec3 u, v;
+    const DVec3 w = glm::normalize(DVec3(normal));
+    perpendicular_frame(w, u, v);
+    piece.frame = glm::dmat3(u, v, w);
+    piece.z0 = 0.0;
+    piece.radius = radius;
+    out.push_back(piece);
+}
+
 }  // namespace rayo

@@ -9,6 +9,7 @@
 #include "core/shapes/outline.h"
 #include "core/shapes/shape.h"
 #include "core/shapes/shape_fields.h"
+#include "core/shapes/tessellation.h"
 
 namespace rayo {
 
@@ -35,6 +36,8 @@ struct Disk {
     void parameterization(const Vec3& position, SurfaceHit& out) const;
     // The rim.
     void outline(Outline& out) const;
+    // Its surface as parametric a piece for tessellation (core/shapes/tessellation.h).
+    void pieces(SurfacePieces& out) const;
 };
 
 }  // namespace rayo

@@ -33,6 +33,9 @@ struct Quadric : QuadricShape<Quadric> {
     ClippedQuadric intersector() const;
     // The edges of the clip box (a general quadric's silhouette is not drawn).
     void outline(Outline& out) const { intersector().add_box_edges(out); }
+    // None: a general quadric clipped to a box is not tessellated (docs/radiosity.md, "Choices
+    // and limits"); the radiosity solve warns and leaves it out.
+    void pieces(SurfacePieces&) const {}
 };
 
 }  // namespace rayo

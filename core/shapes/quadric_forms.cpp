@@ -1,6 +1,7 @@
 #include "core/shapes/quadric_forms.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace rayo {
@@ -35,6 +36,32 @@ void add_profiles(const ClippedQuadric& q, Outline& out, double z0, double z1, R
             return radius_of(z) * direction + DVec3(0.0, 0.0, z);
         });
     }
+}
+
+// A surface of revolution about the local z axis of a quadric's frame, over [z0, z1].
+SurfacePiece revolution(const ClippedQuadric& q, double z0, double z1,
+                        const std::array<double, 3>& r2) {
+    SurfacePiece piece;
+    piece.kind = SurfacePiece::Kind::Revolution;
+    piece.origin = q.origin;
+    piece.frame = q.rotation;
+    piece.z0 = z0;
+    piece.z1 = z1;
+    piece.r2 = r2;
+    return piece;
+}
+
+// The disc of `radius` at local height z that a box face cuts from a capped solid; `down` when
+// its outward normal is −z.
+SurfacePiece cap(const ClippedQuadric& q, double z, double radius, bool down) {
+    SurfacePiece piece;
+    piece.kind = SurfacePiece::Kind::Cap;
+    piece.origin = q.origin;
+    piece.frame = q.rotation;
+    piece.z0 = z;
+    piece.radius = radius;
+    piece.flip = down;
+    return piece;
 }
 
 }  // namespace
@@ -155,6 +182,48 @@ void Hyperboloid::outline(Outline& out) const {
     } else {
         add_profiles(q, out, semi_axis, half, profile);
         add_profiles(q, out, -half, -double(semi_axis), profile);
+    }
+}
+
+void Ellipsoid::pieces(SurfacePieces& out) const {
+    SurfacePiece piece;
+    piece.kind = SurfacePiece::Kind::Sphere;
+    piece.origin = DVec3(center);
+    piece.frame = glm::dmat3(radii.x, 0.0, 0.0, 0.0, radii.y, 0.0, 0.0, 0.0, radii.z);
+    out.push_back(piece);
+}
+
+void Cylinder::pieces(SurfacePieces& out) const {
+    const ClippedQuadric q = intersector();
+    const double r = radius;
+    out.push_back(revolution(q, 0.0, q.upper.z, {r * r, 0.0, 0.0}));
+    if (capped) {
+        out.push_back(cap(q, 0.0, r, true));
+        out.push_back(cap(q, q.upper.z, r, false));
+    }
+}
+
+void Paraboloid::pieces(SurfacePieces& out) const {
+    const ClippedQuadric q = intersector();
+    const double r = radius, h = height;
+    out.push_back(revolution(q, 0.0, h, {0.0, r * r / h, 0.0}));
+    if (capped) out.push_back(cap(q, h, r, false));
+}
+
+void Hyperboloid::pieces(SurfacePieces& out) const {
+    const ClippedQuadric q = intersector();
+    const double a = radius, c = semi_axis, half = 0.5 * height;
+    // ρ² = a²·((z/c)² ± 1): + one sheet, − two sheets.
+    const std::array<double, 3> r2 = {sheets == 1 ? a * a : -a * a, 0.0, a * a / (c * c)};
+    if (sheets == 1) {
+        out.push_back(revolution(q, -half, half, r2));
+    } else {
+        out.push_back(revolution(q, c, half, r2));
+        out.push_back(revolution(q, -half, -c, r2));
+    }
+    if (capped) {
+        out.push_back(cap(q, -half, radius_at(-half), true));
+        out.push_back(cap(q, half, radius_at(half), false));
     }
 }
 

@@ -33,6 +33,8 @@ struct Ellipsoid : QuadricShape<Ellipsoid> {
     ClippedQuadric intersector() const;
     // The three principal ellipses.
     void outline(Outline& out) const;
+    // Its surface as parametric pieces for tessellation (core/shapes/tessellation.h).
+    void pieces(SurfacePieces& out) const;
 };
 
 struct Cylinder : QuadricShape<Cylinder> {
@@ -54,6 +56,8 @@ struct Cylinder : QuadricShape<Cylinder> {
     ClippedQuadric intersector() const;
     // Both rims and four generators.
     void outline(Outline& out) const;
+    // Its surface as parametric pieces for tessellation (core/shapes/tessellation.h).
+    void pieces(SurfacePieces& out) const;
 };
 
 struct Paraboloid : QuadricShape<Paraboloid> {
@@ -77,6 +81,8 @@ struct Paraboloid : QuadricShape<Paraboloid> {
     ClippedQuadric intersector() const;
     // The rim and four profile parabolas.
     void outline(Outline& out) const;
+    // Its surface as parametric pieces for tessellation (core/shapes/tessellation.h).
+    void pieces(SurfacePieces& out) const;
 };
 
 struct Hyperboloid : QuadricShape<Hyperboloid> {
@@ -104,6 +110,8 @@ struct Hyperboloid : QuadricShape<Hyperboloid> {
     ClippedQuadric intersector() const;
     // The end rims (and the waist of one sheet) and four profile hyperbolas.
     void outline(Outline& out) const;
+    // Its surface as parametric pieces for tessellation (core/shapes/tessellation.h).
+    void pieces(SurfacePieces& out) const;
     // The radius at axial distance z from the centre.
     double radius_at(double z) const;
 };

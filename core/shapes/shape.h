@@ -17,6 +17,8 @@
 //   void parameterization(const Vec3& position, SurfaceHit& out) const;  // uv and dpdu
 //   void outline(Outline& out) const;  // its lines seen from out.view().eye: the wireframe
 //       // preview (core/shapes/outline.h)
+//   void pieces(SurfacePieces& out) const;  // its surface as parametric pieces: tessellation
+//       // for the radiosity solve (core/shapes/tessellation.h); none for the general quadric
 //
 // Directions are unit length. A shape whose intersection wants per-shape precomputation names
 // it `using Intersector = ...; Intersector intersector() const;` (the cone's frame); otherwise

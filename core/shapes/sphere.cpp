@@ -37,6 +37,14 @@ void Sphere::parameterization(const Vec3& position, SurfaceHit& out) const {
     out.dpdu = 2.0f * kPi * radius * Vec3(n.z, 0.0f, -n.x);
 }
 
+void Sphere::pieces(SurfacePieces& out) const {
+    SurfacePiece piece;
+    piece.kind = SurfacePiece::Kind::Sphere;
+    piece.origin = DVec3(center);
+    piece.frame = glm::dmat3(static_cast<double>(radius));
+    out.push_back(piece);
+}
+
 void Sphere::outline(Outline& out) const {
     // The rays from the eye E that touch the sphere form a cone; they touch it on the circle
     // about C − (r²/d²)(C − E) of radius r·√(d² − r²)/d, in the plane normal to C − E

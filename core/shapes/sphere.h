@@ -19,6 +19,7 @@
 #include "core/shapes/outline.h"
 #include "core/shapes/shape.h"
 #include "core/shapes/shape_fields.h"
+#include "core/shapes/tessellation.h"
 
 namespace rayo {
 
@@ -49,6 +50,8 @@ struct Sphere {
     // The silhouette from out.view().eye: the circle where the cone of rays from the eye
     // touches the sphere (none when the eye is inside).
     void outline(Outline& out) const;
+    // Its surface as parametric pieces for tessellation (core/shapes/tessellation.h).
+    void pieces(SurfacePieces& out) const;
 };
 
 // The seed's rule for two roots t0 <= t1: the near root if it lies in (tnear, tfar), else the

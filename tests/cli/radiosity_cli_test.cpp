@@ -1,6 +1,6 @@
 // Tests of `rayo render --gi radiosity` and `--gi-view` (docs/radiosity.md): the summary line
-// (patches, solve time, shots, form-factor rays), the flag errors, and that the flat patch view
-// differs from the smooth one.
+// (patches, solve time, shots, form-factor rays), the flag errors, that the flat patch view
+// differs from the smooth one, and the warning for general quadrics (not tessellated).
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
@@ -80,6 +80,22 @@ TEST_F(RadiosityCli, PatchViewDiffersFromTheSmoothOne) {
     ASSERT_EQ(smooth.size(), 24u * 16u * 4u);
     EXPECT_EQ(smooth, pixels("again.exr"));
     EXPECT_NE(smooth, pixels("flat.exr"));
+}
+
+TEST_F(RadiosityCli, WarnsThatGeneralQuadricsAreNotInTheSolve) {
+    std::string room = kRoom;
+    room.insert(room.rfind("]}"),
+                R"(, {"type": "quadric", "coefficients": [1, 1, 1, 0, 0, 0, 0, 0, 0, -0.04],
+                      "bounds": {"min": [-0.3, 0, -0.3], "max": [0.3, 0.5, 0.3]}})");
+    write("room.json", room);
+    const CommandResult r = run("render room.json --gi radiosity -o room.exr");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: radiosity: 1 general quadric(s) have no tessellation"),
+              std::string::npos)
+        << r.output;
+    const CommandResult none = run("render room.json -o none.exr");
+    ASSERT_EQ(none.exit_code, 0) << none.output;
+    EXPECT_EQ(none.output.find("general quadric"), std::string::npos) << none.output;
 }
 
 TEST_F(RadiosityCli, BadFlagsAreRefused) {

@@ -201,9 +201,10 @@ std::string disk_light_scene(int samples, const std::string& extra_objects = "")
 }
 
 TEST(AreaLightScene, FloorUnderADiskLightGetsTheClosedFormIrradiance) {
-    // E = π·L·R²/(h² + R²) with L = 3, R = 1, h = 4; the floor's kd = 1 shows E itself.
+    // E = π·L·R²/(h² + R²) with L = 3, R = 1, h = 4; the Lambertian floor (kd = 1) reflects
+    // E/π (an area light's light is radiometric, docs/radiosity.md).
     Tracer t(disk_light_scene(256));
-    const double expected = kPi * 3.0 / (16.0 + 1.0);
+    const double expected = kPi * 3.0 / (16.0 + 1.0) / kPi;
     const Vec3 e = t.radiance(Vec3(0, 1, 0), Vec3(0, -1, 0));
     EXPECT_NEAR(e.x, expected, 0.01 * expected);
     EXPECT_EQ(t.counters.shadow, 256u);

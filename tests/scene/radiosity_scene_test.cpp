@@ -9,6 +9,7 @@
 #include "apps/scene/json_loader.h"
 #include "apps/scene/renderer.h"
 #include "core/error.h"
+#include "shading/radiosity.h"
 #include "shading/radiosity_field.h"
 #include "tests/test_helpers.h"
 
@@ -139,10 +140,11 @@ TEST(RadiosityScene, SameBitsForAnyThreadCountAndTileSize) {
 }
 
 TEST(RadiosityScene, AreaLightIsCountedOnce) {
-    // A floor under a rectangle light, seen straight down. Whitted's local model has no 1/π
-    // (seed 000: kd·Il·cosθ, so kd·E for an area light's irradiance E); the radiosity solution
-    // reflects ρ·E/π. With "gi": "radiosity" the floor shows the solution alone: the light's
-    // direct term is not added on top.
+    // A floor under a rectangle light, seen straight down, with nothing to reflect its light
+    // back (the light's surface is black): the Whitted render reflects kd·E/π of the light's
+    // irradiance E (area lights are radiometric), the radiosity solution ρ·E/π, so both show
+    // the same. With "gi": "radiosity" the floor shows the solution alone: the light's direct
+    // term is not added on top.
     const std::string text = R"({"rayo": 1,
       "camera": {"eye": [0, 0.5, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "vfov": 2,
                  "width": 4, "height": 4},
@@ -161,8 +163,8 @@ TEST(RadiosityScene, AreaLightIsCountedOnce) {
     const float radiosity = with("radiosity");
     EXPECT_GT(whitted, 0.1f);
     // The patches average the peak under the light a little down (0.2 patches): 4%; a double
-    // count would be 1 + π times more.
-    EXPECT_NEAR(radiosity, whitted / kPi, 0.04f * whitted / kPi);
+    // count would be twice as bright, seed 000's convention π times.
+    EXPECT_NEAR(radiosity, whitted, 0.04f * whitted);
 }
 
 TEST(RadiosityScene, FieldCutsTrianglesToThePatchSize) {
@@ -208,6 +210,152 @@ TEST(RadiosityScene, FieldCutsTrianglesToThePatchSize) {
     EXPECT_EQ(r.x, 0.0f);
     hit.shape = 0;  // an analytic shape: not in the solve
     EXPECT_FALSE(field.reflected(hit, r));
+}
+
+// ---- Analytic shapes in the solve (tessellated for it; rendered analytically) -----------------
+
+TEST(RadiosityScene, SphereInTheWhiteFurnaceGetsTheFurnaceRadiosity) {
+    // A sphere of the walls' material (ρ = 0.5, emitting E) in front of the eye: it too has
+    // B = E/(1 − ρ) = 2E, which the camera sees on it (the reflected B − E plus the emission).
+    std::string text = kFurnace;
+    auto put = [&](const std::string& key, const std::string& value) {
+        text.replace(text.find(key), key.size(), value);
+    };
+    put("GI", "radiosity");
+    put("METHOD", "rays");
+    put("RAYS", "16");
+    put("1e-6", "1e-3");
+    put(R"("objects": [)",
+        R"("objects": [{"type": "sphere", "center": [0.5, 0.5, 0.25], "radius": 0.12},)");
+    const RenderResult r = render_scene(load(text), 2, false);
+    ASSERT_TRUE(r.radiosity);
+    EXPECT_GT(r.radiosity_patches, 200u);  // the walls' 108 and the sphere's
+    for (const auto& [x, y] : {std::pair{5, 5}, {6, 6}, {5, 6}, {6, 5}, {0, 0}, {11, 3}}) {
+        SCOPED_TRACE(std::to_string(x) + "," + std::to_string(y));
+        rayo_test::expect_vec3(r.film.rgb(x, y), 2.0f, 1.0f, 4.0f, 0.04f * 4.0f);
+    }
+}
+
+// A black-bodied square emitter of radiance 1 at height 2 (facing down) over a white sphere
+// (kd 0.8, no ambient, no lights), seen from `eye` toward the point `at` of the sphere.
+SceneDescription sphere_under_emitter(const std::string& gi, const Vec3& at, const Vec3& eye) {
+    auto vec = [](const Vec3& v) {
+        return "[" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) +
+               "]";
+    };
+    return load(R"({"rayo": 1,
+      "camera": {"eye": )" +
+                vec(eye) + R"(, "look_at": )" + vec(at) + R"(, "up": [0, 0, 1], "vfov": 1,
+                 "width": 3, "height": 3},
+      "render": {"gi": ")" +
+                gi + R"("}, "ambient_light": 0,
+      "radiosity": {"patch_size": 0.1, "form_factors": "analytic", "rays": 16},
+      "materials": {"white": {"kd": 0.8, "ka": 0},
+                    "light": {"kd": 0, "ka": 0, "emission": [1, 1, 1]}},
+      "objects": [
+        {"type": "polygon", "material": "light",
+         "vertices": [[-1, 2, -1], [1, 2, -1], [1, 2, 1], [-1, 2, 1]]},
+        {"type": "sphere", "material": "white", "center": [0, 0, 0], "radius": 0.5}]})");
+}
+
+TEST(RadiosityScene, DiffuseSphereNextToAnEmitterReceivesLight) {
+    // At a point p of the sphere (normal n) that sees the whole emitter, the solution reflects
+    // ρ·L·F(p → emitter), F the closed-form point-to-polygon factor; the vertex interpolation
+    // over 0.1 patches is within 3% of it. Without radiosity the sphere is black (no lights,
+    // no ambient); its underside stays black with radiosity too.
+    const Vec3 n = glm::normalize(Vec3(0.0f, 1.0f, 1.0f));
+    const Vec3 p = 0.5f * n;
+    const DVec3 square[4] = {DVec3(-1, 2, -1), DVec3(1, 2, -1), DVec3(1, 2, 1), DVec3(-1, 2, 1)};
+    const double expected = 0.8 * point_polygon_form_factor(DVec3(p), DVec3(n), square, 4);
+    ASSERT_GT(expected, 0.05);
+    const RenderResult lit =
+        render_scene(sphere_under_emitter("radiosity", p, p + 3.0f * n), 1, false);
+    EXPECT_NEAR(lit.film.rgb(1, 1).x, expected, 0.03 * expected);
+    const RenderResult direct =
+        render_scene(sphere_under_emitter("none", p, p + 3.0f * n), 1, false);
+    EXPECT_EQ(direct.film.rgb(1, 1).x, 0.0f);
+    const Vec3 below(0.0f, -0.5f, 0.0f);
+    const RenderResult under =
+        render_scene(sphere_under_emitter("radiosity", below, Vec3(0.0f, -3.0f, 0.0f)), 1, false);
+    EXPECT_EQ(under.film.rgb(1, 1).x, 0.0f);
+}
+
+TEST(RadiosityScene, DiskAndSphereAreaLightsShootLikeTheirDirectLight) {
+    // A floor under a disk or a sphere area light, seen straight down: the solve (the light's
+    // tessellation shooting) gives the floor what the Whitted pass gives it from the light's
+    // samples, kd·E/π, less the power between the tessellation's chords (1% at 26 cells
+    // around) and the vertex averaging's.
+    for (const char* light : {R"("shape": "disk", "center": [0, 1, 0], "normal": [0, -1, 0],
+                                 "radius": 0.4)",
+                              R"("shape": "sphere", "center": [0, 1.2, 0], "radius": 0.4)"}) {
+        SCOPED_TRACE(light);
+        const std::string text = std::string(R"({"rayo": 1,
+          "camera": {"eye": [0, 0.5, 0], "look_at": [0, 0, 0], "up": [0, 0, 1], "vfov": 2,
+                     "width": 4, "height": 4},
+          "render": {"gi": "GI"}, "ambient_light": 0,
+          "radiosity": {"patch_size": 0.1, "form_factors": "analytic", "rays": 16},
+          "materials": {"default": {"kd": 0.5, "ka": 0}},
+          "lights": [{"type": "area", )") +
+                                 light + R"(, "samples": 1024, "intensity": 2}],
+          "objects": [{"type": "polygon", "vertices": [[-0.3,0,-0.3], [-0.3,0,0.3], [0.3,0,0.3], [0.3,0,-0.3]]}]})";
+        auto with = [&](const char* gi) {
+            std::string t = text;
+            t.replace(t.find("GI"), 2, gi);
+            return render_scene(load(t), 1, false).film.rgb(2, 2).x;
+        };
+        const float whitted = with("none");
+        EXPECT_GT(whitted, 0.05f);
+        EXPECT_NEAR(with("radiosity"), whitted, 0.025f * whitted);
+    }
+}
+
+TEST(RadiosityScene, FieldShowsTheSpheresPatchesAndInterpolatesItsVertices) {
+    Scene scene;
+    scene.shapes.of<Sphere>().push_back({Vec3(1.0f, 2.0f, 0.0f), 0.5f, 0});
+    std::vector<Material> materials(1);
+    RadiosityField field(scene, materials, 0.25f);
+    const std::vector<RadiosityPatch>& patches = field.patches();
+    // 2π·0.5/0.25 → 13 around (at least 16), π·0.5/0.25 → 7 along (at least 8), less the
+    // collapsed halves of the cells at the poles.
+    ASSERT_EQ(patches.size(), 2u * 16u * 8u - 2u * 16u);
+    SurfaceHit hit;
+    hit.shape = Shapes::index_of<Sphere>();
+    hit.primitive = 0;
+    // Every patch's B: red its centroid's height above the sphere's centre, green its index.
+    // The smooth view interpolates the height (within the patches' size: the vertex averages
+    // lie below the surface near the poles), the flat one shows the index of the patch that
+    // holds the hit.
+    std::vector<DVec3> b(patches.size());
+    for (size_t i = 0; i < patches.size(); ++i) {
+        const Vec3 c =
+            (patches[i].vertices[0] + patches[i].vertices[1] + patches[i].vertices[2]) / 3.0f;
+        b[i] = DVec3(c.y - 2.0f, static_cast<double>(i), 0.0);
+    }
+    field.set_solution(b);
+    Vec3 r;
+    for (float theta : {0.3f, 1.0f, 1.6f, 2.5f}) {
+        for (float phi : {0.2f, 2.0f, 4.0f}) {
+            const Vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta),
+                         std::sin(theta) * std::sin(phi));
+            hit.position = Vec3(1.0f, 2.0f, 0.0f) + 0.5f * n;
+            field.set_flat(false);
+            ASSERT_TRUE(field.reflected(hit, r));
+            EXPECT_NEAR(r.x, 0.5f * n.y, 0.06f);  // the patches' height differences: 0.19
+            field.set_flat(true);
+            ASSERT_TRUE(field.reflected(hit, r));
+            // The patch whose index came back holds the hit's radial projection (to 0.02 rad:
+            // the grid's rows are small circles, the patches' edges chords).
+            const auto holder = static_cast<size_t>(r.y);
+            ASSERT_LT(holder, patches.size());
+            const RadiosityPatch& patch = patches[holder];
+            const Vec3 o(1.0f, 2.0f, 0.0f);
+            for (int e = 0; e < 3; ++e) {
+                const Vec3 a = patch.vertices[e] - o, c = patch.vertices[(e + 1) % 3] - o;
+                EXPECT_GE(glm::dot(glm::normalize(glm::cross(a, c)), n), -0.02f)
+                    << "theta " << theta << " phi " << phi;
+            }
+        }
+    }
 }
 
 }  // namespace
