@@ -121,6 +121,33 @@ TEST(HeightField, GridLinesDiagonalsAndCornersDoNotLeak) {
     EXPECT_GT(rays, 1000);
 }
 
+TEST(HeightField, FarRaysThroughCornersOfALargeFieldDoNotLeak) {
+    // 1024² cells of 0.1, seen from about 1.5 field widths away (as the bench's camera): float
+    // error in the edge tests grows with the distance in cells.
+    HeightField f;
+    f.columns = f.rows = 1025;
+    f.lower = Vec3(-51.2f, 0.0f, -51.2f);
+    f.size = Vec3(102.4f, 1.0f, 102.4f);
+    f.heights.assign(size_t(1025) * 1025, 0.25f);
+    f.finish();
+    const Vec3 eye(-70.0f, 45.0f, -70.0f);
+    int leaks = 0, rays = 0;
+    for (int j = 1; j < 1024; j += 7) {
+        for (int i = 1; i < 1024; i += 7) {
+            const Vec3 corner = f.vertex(i, j);
+            const Vec3 d = glm::normalize(corner - eye);
+            ShapeHit hit;
+            ++rays;
+            if (!f.nearest(eye, d, 0.0f, 1e30f, hit)) {
+                ++leaks;
+                continue;
+            }
+            EXPECT_NEAR(hit.t, glm::length(corner - eye), 1e-3f);
+        }
+    }
+    EXPECT_EQ(leaks, 0) << "of " << rays << " rays through sample points";
+}
+
 TEST(HeightField, TessellationMatchesTheTraversalsTriangles) {
     HeightField f = bumpy(5, 4);
     f.smooth = true;
