@@ -12,34 +12,60 @@ namespace {
 
 constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
-// Barycentric tolerance of the triangle test: the two triangles of a cell and the triangles of
-// neighbouring cells overlap by this fraction of an edge, so that a ray along a grid line or a
-// diagonal, or through a corner, cannot pass between them (tests/core/height_field_test.cpp).
-// Neighbouring triangles compute their edge tests separately, each with a float error of about
-// 6e-8·|origin − corner| / edge (in edge lengths): with 1e-5, 6 of 262144 camera rays leaked
-// through a 2048² field and 20 through a 4096² one seen from about 1.5 field widths away
-// (bench/heightfield_study.cpp against the mesh's hit count); 2e-3 covers origins 3·10⁴ cells
-// away.
-constexpr float kEdgeTolerance = 2e-3f;
+// The watertight ray–triangle test of Woop, Benthin & Wald (2013): the vertices are moved into
+// a frame where the ray runs along +z from the origin, and the 2-D edge functions are computed
+// from each vertex's own transformed coordinates (in double), so the two triangles that share an
+// edge evaluate it identically with opposite signs: no ray passes between them along a grid
+// line or a diagonal or through a corner (tests/core/height_field_test.cpp). Möller–Trumbore
+// with a barycentric tolerance of 1e-5 let 6 of 262144 camera rays through a 2048² field and 20
+// through a 4096² one, and a tolerance of 2e-3 made false hits on ridges. The edge functions
+// keep a tolerance of kEdgeTolerance (in barycentric units) for another reason: a ray aimed at
+// a sample point lands, after rounding, in one of the six triangles around it, which may lie in
+// a cell the DDA's own rounding skipped (1 % of such rays 1000 cells away leaked without it).
+constexpr double kEdgeTolerance = 1e-4;
 
-// Möller–Trumbore (1997), with the barycentric tolerance above: t and the geometric normal
-// (p1 − p0) × (p2 − p0).
-bool hit_triangle(const Vec3& origin, const Vec3& direction, const Vec3& p0, const Vec3& p1,
-                  const Vec3& p2, float& t, Vec3& normal) {
-    const Vec3 e1 = p1 - p0, e2 = p2 - p0;
-    const Vec3 p = glm::cross(direction, e2);
-    const float det = glm::dot(e1, p);
-    if (det == 0.0f || !std::isfinite(det)) return false;
-    const float inv = 1.0f / det;
-    const Vec3 s = origin - p0;
-    const float u = glm::dot(s, p) * inv;
-    if (u < -kEdgeTolerance || u > 1.0f + kEdgeTolerance) return false;
-    const Vec3 q = glm::cross(s, e1);
-    const float v = glm::dot(direction, q) * inv;
-    if (v < -kEdgeTolerance || u + v > 1.0f + kEdgeTolerance) return false;
-    t = glm::dot(e2, q) * inv;
-    normal = glm::cross(e1, e2);
-    return true;
+struct RayFrame {
+    int kx, ky, kz;
+    float sx, sy, sz;
+    Vec3 origin;
+    RayFrame(const Vec3& o, const Vec3& d) : origin(o) {
+        const Vec3 a = glm::abs(d);
+        kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
+        kx = (kz + 1) % 3;
+        ky = (kx + 1) % 3;
+        if (d[kz] < 0.0f) std::swap(kx, ky);  // keep the winding
+        sx = d[kx] / d[kz];
+        sy = d[ky] / d[kz];
+        sz = 1.0f / d[kz];
+    }
+    // A vertex in the ray's frame: (x, y) sheared, z scaled below.
+    void transform(const Vec3& p, double& x, double& y, float& z) const {
+        const Vec3 a = p - origin;
+        x = double(a[kx] - sx * a[kz]);
+        y = double(a[ky] - sy * a[kz]);
+        z = a[kz];
+    }
+};
+
+bool hit_triangle(const RayFrame& ray, const Vec3& p0, const Vec3& p1, const Vec3& p2, float& t,
+                  Vec3& normal) {
+    double ax, ay, bx, by, cx, cy;
+    float az, bz, cz;
+    ray.transform(p0, ax, ay, az);
+    ray.transform(p1, bx, by, bz);
+    ray.transform(p2, cx, cy, cz);
+    const double u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+    const double tolerance = kEdgeTolerance * std::fabs(u + v + w);
+    if ((u < -tolerance || v < -tolerance || w < -tolerance) &&
+        (u > tolerance || v > tolerance || w > tolerance)) {
+        return false;
+    }
+    const double det = u + v + w;
+    if (det == 0.0) return false;
+    const double sz = ray.sz;
+    t = float((u * sz * az + v * sz * bz + w * sz * cz) / det);
+    normal = glm::cross(p1 - p0, p2 - p0);
+    return std::isfinite(t);
 }
 
 }  // namespace
@@ -122,6 +148,7 @@ bool HeightField::nearest(const Vec3& origin, const Vec3& direction, float tnear
         const float yb = origin.y + direction.y * tb - lower.y;
         return std::max(ya, yb) < low - pad || std::min(ya, yb) > high + pad;
     };
+    const RayFrame frame(origin, direction);
     const auto visit_cell = [&](int i, int j, float ta, float tb) {
         const float h00 = height(i, j), h10 = height(i + 1, j);
         const float h01 = height(i, j + 1), h11 = height(i + 1, j + 1);
@@ -136,8 +163,7 @@ bool HeightField::nearest(const Vec3& origin, const Vec3& direction, float tnear
             triangle(part, c);
             float t;
             Vec3 normal;
-            if (hit_triangle(origin, direction, vertex_at(c[0]), vertex_at(c[1]), vertex_at(c[2]),
-                             t, normal) &&
+            if (hit_triangle(frame, vertex_at(c[0]), vertex_at(c[1]), vertex_at(c[2]), t, normal) &&
                 t > tnear && t < tfar && (!found || t < hit.t)) {
                 hit = {t, normal, part};
                 found = true;

@@ -6,7 +6,7 @@
 //     over blocks of kHeightBlock² cells, then over cells, skipping every block and cell whose
 //     height range the ray's height range over it misses, and testing the cell's two triangles;
 //     memory: the samples and the per-block bounds (about 4 bytes per sample);
-//   - mesh: tessellate() into a TriangleMesh for Embree triangles (about 60–100 bytes per cell).
+//   - mesh: tessellate() into a TriangleMesh for Embree triangles (about 210 bytes per cell).
 // Both give the same triangles, the same geometric normals (up-facing winding) and, with
 // `smooth`, the same vertex normals (central differences of the samples).
 #include <cstddef>
@@ -23,9 +23,10 @@ namespace rayo {
 constexpr int kHeightBlock = 16;
 
 // `auto` (docs/heightfields.md): Embree triangles while their estimated memory stays within
-// kAutoMeshBytes, the traversal beyond. The estimate is the measured memory of the mesh form per
-// cell (Embree's buffers and BVH plus rayo's TriangleMesh; the chart in docs/heightfields.md).
-constexpr size_t kMeshBytesPerCell = 160;
+// kAutoMeshBytes (about 1131² cells), the traversal beyond. The estimate is the measured memory
+// of the mesh form per cell: rayo's TriangleMesh (40 bytes) plus Embree's buffers and BVH
+// (160–175), from 256² to 4096² (bench/heightfield_study.sh; the chart in docs/heightfields.md).
+constexpr size_t kMeshBytesPerCell = 210;
 constexpr size_t kAutoMeshBytes = size_t(256) << 20;
 inline bool auto_prefers_mesh(size_t cells) {
     return cells <= kAutoMeshBytes / kMeshBytesPerCell;

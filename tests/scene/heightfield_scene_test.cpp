@@ -110,7 +110,7 @@ TEST(HeightFieldScene, TraversalAndMeshRenderTheSamePicture) {
             differing += std::max(d.x, std::max(d.y, d.z)) > 1e-3f;
         }
     }
-    EXPECT_GT(covered, a.width() * a.height() / 2);
+    EXPECT_GT(covered, a.width() * a.height() / 4);
     // Pixels may differ only where a shadow ray or a sample grazes an edge: at most 0.5%.
     EXPECT_LE(differing, a.width() * a.height() / 200) << differing << " pixels differ";
 }
@@ -133,7 +133,7 @@ TEST(HeightFieldScene, BadValuesNameTheirPointer) {
         EXPECT_NE(error.find(message), std::string::npos) << error;
     };
     expect_error(R"({"type": "heightfield", "image": "missing.png", "size": [1, 1, 1]})",
-                 "s.json#/objects/0/image: cannot open height image './missing.png'");
+                 "s.json#/objects/0/image: cannot open height image 'missing.png'");
     std::ofstream(temp_path("not_an_image.png")) << "hello";
     expect_error(R"({"type": "heightfield", "image": "not_an_image.png", "size": [1, 1, 1]})",
                  "s.json#/objects/0/image: height image '" + temp_path("not_an_image.png") +
