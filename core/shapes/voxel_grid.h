@@ -1,6 +1,9 @@
 #pragma once
 // Voxel data traced by directional 3-D DDA (seed 004: "voxel data by directional traversal";
-// Amanatides & Woo 1987, core/grid_walk.h). Values sit at voxel centres and are interpolated
+// Amanatides & Woo 1987, core/grid_walk.h). Status: the traversal, the iso-surface, the
+// compositing and the raw decoding, with their tests (tests/core/voxel_grid_test.cpp); not yet
+// reachable from scene files (issue 11 item 5: the JSON `voxels` object, its Embree binding and
+// the shader's compositing are still to do). Values sit at voxel centres and are interpolated
 // trilinearly between them.
 //   - surface: the iso-surface value = threshold. The walk goes over the cells between voxel
 //     centres (the dual grid), skips cells whose eight corner values do not straddle the
