@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/embree_device.h"
+#include "core/shapes/height_field_geometry.h"
 #include "core/shapes/mesh_geometry.h"
 #include "core/shapes/sphere_geometry.h"
 #include "core/user_geometry.h"
@@ -55,6 +56,10 @@ Accel::Accel(const Scene& scene, const AccelOptions& options) : m_options(option
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         if (scene.meshes[m].triangles.empty()) continue;
         attach(make_mesh_binding(scene.meshes[m], static_cast<uint32_t>(m), kTriangleShape));
+    }
+    for (size_t f = 0; f < scene.heightfields.size(); ++f) {
+        attach(make_height_field_binding(scene.heightfields[f], static_cast<uint32_t>(f),
+                                         kHeightFieldShape));
     }
     rtcCommitScene(m_rtc_scene);
     fail_on_embree_error("scene commit");

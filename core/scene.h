@@ -1,13 +1,15 @@
 #pragma once
 // The geometric scene: camera, the analytic shapes (one vector per registered type,
 // core/shapes/registry.h) and triangle meshes, with material ids. Materials and lights live in
-// shading/ (core knows nothing of shading); the loaders fill both.
+// shading/ (core knows nothing of shading); the loaders fill both. Height fields of the `dda`
+// method are kept as grids; the `mesh` method's are among the meshes.
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "core/camera.h"
 #include "core/scene_limits.h"
+#include "core/shapes/height_field.h"
 #include "core/shapes/mesh.h"
 #include "core/shapes/registry.h"
 
@@ -15,11 +17,15 @@ namespace rayo {
 
 // SurfaceHit::shape of a triangle hit (the analytic shapes are 0 .. kCount − 1).
 constexpr uint32_t kTriangleShape = AnalyticShapes::kCount;
+// SurfaceHit::shape of a hit on a height field traced by its grid traversal (SurfaceHit::mesh is
+// the field's index in Scene::heightfields; the `mesh` method's hits are triangle hits).
+constexpr uint32_t kHeightFieldShape = kTriangleShape + 1;
 
 struct Scene {
     CameraDesc camera;
     Shapes shapes;
     std::vector<TriangleMesh> meshes;
+    std::vector<HeightField> heightfields;  // traced by grid traversal (docs/heightfields.md)
 
     size_t triangle_count() const {
         size_t n = 0;

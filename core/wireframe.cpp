@@ -63,6 +63,7 @@ WireframeStats draw_wireframe(const Scene& scene, const Camera& camera, Film& fi
         for (const auto& shape : shapes) draw(shape);
     });
     for (const TriangleMesh& mesh : scene.meshes) draw(mesh);
+    for (const HeightField& field : scene.heightfields) draw(field);
     return stats;
 }
 

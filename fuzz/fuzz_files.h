@@ -1,7 +1,8 @@
 #pragma once
 // Scratch files for the fuzzers: a private folder (in /dev/shm when there is one, so writing an
 // input per run is cheap) holding the small meshes the seed corpora refer to by name
-// (tri.obj + tri.mtl, tri.gltf + tri.bin), and a helper that writes the current input there.
+// (tri.obj + tri.mtl, tri.gltf + tri.bin) and the height image dem.pgm, and a helper that
+// writes the current input there.
 #include <unistd.h>
 
 #include <cstdint>
@@ -58,6 +59,8 @@ inline const std::filesystem::path& scratch_dir() {
         write_file(d / "tri.mtl", kTriMtl);
         write_file(d / "tri.gltf", kTriGltf);
         write_file(d / "tri.bin", tri_bin());
+        write_file(d / "dem.pgm",
+                   std::string("P5 3 3 255\n\x00\x40\x80\x20\xff\x60\x10\x30\x50", 20));
         return d;
     }();
     // libFuzzer ends a clean run with exit(): remove the folder then (a crash keeps it). Registered

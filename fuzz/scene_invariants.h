@@ -57,6 +57,15 @@ inline void check_scene(const SceneDescription& d) {
     for (size_t i = 0; i < d.scene.meshes.size(); ++i) {
         check_mesh(d.scene.meshes[i], materials, "mesh " + std::to_string(i));
     }
+    for (const HeightField& f : d.scene.heightfields) {
+        expect(
+            f.columns >= 2 && f.rows >= 2 && f.heights.size() == size_t(f.columns) * size_t(f.rows),
+            "heightfield samples");
+        expect(finite(f.bounds().lower) && finite(f.bounds().upper) && f.size.x > 0.0f &&
+                   f.size.y > 0.0f && f.size.z > 0.0f,
+               "heightfield bounds");
+        expect(f.material < materials, "heightfield material id out of range");
+    }
     for (const Material& m : d.shading.materials) {
         expect(finite(m.ka) && finite(m.kd) && finite(m.ks) && finite(m.reflect) &&
                    finite(m.transmit) && finite(m.shininess) && finite(m.ior) && m.ior > 0.0f,

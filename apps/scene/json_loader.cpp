@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "apps/scene/area_light_emitters.h"
+#include "apps/scene/height_image.h"
 #include "apps/scene/input_file.h"
 #include "apps/scene/mesh_loader.h"
 #include "core/error.h"
@@ -29,6 +30,10 @@ constexpr int kFormatVersion = 1;
 // real scene (the deepest rayo format path is about 6 levels), and far below what would exhaust
 // the stack of anything that walks the tree recursively.
 constexpr int kMaxJsonDepth = 256;
+
+// Most samples per side of a height field sampled from a texture (each sample is one evaluation
+// of the texture, a few microseconds: 4096² takes about a minute); larger fields come from images.
+constexpr int kMaxTextureHeightSide = 4096;
 
 // Most points an area light may be sampled at per shading point (each is a shadow ray).
 constexpr int kMaxAreaLightSamples = 4096;
@@ -505,6 +510,8 @@ class SceneParser {
     void parse_object(const Json& value, const std::string& pointer, SceneDescription& out,
                       TriangleMesh& polygons);
     void parse_mesh(const Json& value, const std::string& pointer, SceneDescription& out);
+    void parse_heightfield(const Json& value, const std::string& pointer,
+                           SceneDescription& out) const;
     glm::dmat4 parse_transform(const Json& value, const std::string& pointer) const;
     uint32_t material_of(const Json& object, const std::string& pointer) const;
 
@@ -1063,7 +1070,9 @@ void SceneParser::parse_object(const Json& value, const std::string& pointer, Sc
     // The registered shapes by name (core/shapes/registry.h), then the triangle-mesh kinds.
     static const std::vector<std::string> types = [] {
         std::vector<std::string> names = Shapes::names();
-        for (const char* kind : {"triangle", "polygon", "mesh"}) names.push_back(kind);
+        for (const char* kind : {"triangle", "polygon", "mesh", "heightfield"}) {
+            names.push_back(kind);
+        }
         return names;
     }();
     static const std::string expected_type = [] {
@@ -1109,8 +1118,106 @@ void SceneParser::parse_object(const Json& value, const std::string& pointer, Sc
         if (!polygons.add_polygon(points, normals, material_of(value, pointer))) {
             fail(vertices_pointer, "expected a " + type + " with non-zero area");
         }
+    } else if (type == "heightfield") {
+        parse_heightfield(value, pointer, out);
     } else {
         parse_mesh(value, pointer, out);
+    }
+}
+
+// A height field (docs/heightfields.md): samples from an image or a named texture, laid over
+// [origin.x, origin.x + size.x] × [origin.z, origin.z + size.z] at height origin.y + size.y·value.
+void SceneParser::parse_heightfield(const Json& value, const std::string& pointer,
+                                    SceneDescription& out) const {
+    check_keys(value, pointer,
+               {"type", "image", "texture", "resolution", "size", "origin", "method", "smooth",
+                "material"});
+    HeightField field;
+    const std::string size_pointer = child(pointer, "size");
+    const Json& size = require(value, pointer, "size", "[x, y, z], each > 0");
+    if (!size.is_array() || size.size() != 3) {
+        fail(size_pointer, "expected [x, y, z], each > 0, got " + describe(size));
+    }
+    for (size_t k = 0; k < 3; ++k) {
+        field.size[int(k)] = real(size[k], child(size_pointer, k), Bound::Positive);
+    }
+    field.lower = Vec3(-0.5f * field.size.x, 0.0f, -0.5f * field.size.z);
+    if (const Json* v = find(value, "origin")) field.lower = vec3(*v, child(pointer, "origin"));
+    std::string method = "auto";
+    if (const Json* v = find(value, "method")) {
+        method = choice(*v, child(pointer, "method"), {"dda", "mesh", "auto"});
+    }
+    if (const Json* v = find(value, "smooth")) {
+        if (!v->is_boolean()) {
+            fail(child(pointer, "smooth"), "expected true or false, got " + describe(*v));
+        }
+        field.smooth = v->get<bool>();
+    }
+    field.material = material_of(value, pointer);
+
+    const Json* image = find(value, "image");
+    const Json* texture = find(value, "texture");
+    if ((image != nullptr) == (texture != nullptr)) {
+        fail(pointer, "expected exactly one of \"image\" (a file) and \"texture\" (a name)");
+    }
+    if (image) {
+        if (find(value, "resolution")) {
+            fail(child(pointer, "resolution"),
+                 "resolution applies to \"texture\"; an image has its own");
+        }
+        const std::string image_pointer = child(pointer, "image");
+        if (!image->is_string() || image->get<std::string>().empty()) {
+            fail(image_pointer, "expected a path to an image file, got " + describe(*image));
+        }
+        HeightSamples samples = read_height_image(join_path(m_base_dir, image->get<std::string>()),
+                                                  m_source + "#" + image_pointer, m_access);
+        field.columns = samples.columns;
+        field.rows = samples.rows;
+        field.heights = std::move(samples.values);
+    } else {
+        int32_t id = kNoTexture;
+        if (!texture->is_string()) {
+            fail(child(pointer, "texture"),
+                 "expected the name of a texture, got " + describe(*texture));
+        }
+        colour_or_texture(value, pointer, "texture", Vec3(0.0f), id);
+        const Texture& map = out.shading.textures[size_t(id)];
+        field.columns = field.rows = 257;
+        if (const Json* v = find(value, "resolution")) {
+            const std::string where = child(pointer, "resolution");
+            if (!v->is_array() || v->size() != 2) {
+                fail(where, "expected [columns, rows], each in [2, " +
+                                std::to_string(kMaxTextureHeightSide) + "], got " + describe(*v));
+            }
+            field.columns = integer((*v)[0], child(where, size_t(0)), 2, kMaxTextureHeightSide);
+            field.rows = integer((*v)[1], child(where, size_t(1)), 2, kMaxTextureHeightSide);
+        }
+        field.heights.resize(size_t(field.columns) * size_t(field.rows));
+        for (int j = 0; j < field.rows; ++j) {
+            for (int i = 0; i < field.columns; ++i) {
+                // The texture's value at the sample's place on the base plane.
+                const Vec3 p =
+                    field.lower + Vec3(field.size.x * float(i) / float(field.columns - 1), 0.0f,
+                                       field.size.z * float(j) / float(field.rows - 1));
+                field.heights[size_t(j) * size_t(field.columns) + size_t(i)] = map.value(p);
+            }
+        }
+    }
+    for (float& h : field.heights) h *= field.size.y;  // sample value 1 -> size.y
+    field.finish();
+    for (const Vec3& corner : {field.bounds().lower, field.bounds().upper}) {
+        if (!within_scene_magnitude(max_abs_component(corner))) {
+            fail(size_pointer, std::string("the height field does not fit in floats: every "
+                                           "coordinate must be ") +
+                                   kSceneMagnitudeRule);
+        }
+    }
+    const bool mesh =
+        method == "mesh" || (method == "auto" && auto_prefers_mesh(field.cell_count()));
+    if (mesh) {
+        out.scene.meshes.push_back(field.tessellate());
+    } else {
+        out.scene.heightfields.push_back(std::move(field));
     }
 }
 

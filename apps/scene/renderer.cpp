@@ -48,6 +48,9 @@ void check_material_ids(const SceneDescription& d) {
         }
         for (uint32_t id : mesh.materials) check(id, "mesh " + std::to_string(m));
     }
+    for (size_t f = 0; f < d.scene.heightfields.size(); ++f) {
+        check(d.scene.heightfields[f].material, "heightfield " + std::to_string(f));
+    }
     const auto texture_count = static_cast<int32_t>(d.shading.textures.size());
     for (const Material& material : d.shading.materials) {
         const MaterialTextures& t = material.textures;

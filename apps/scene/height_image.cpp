@@ -1,0 +1,73 @@
+#include "apps/scene/height_image.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+
+#include "core/error.h"
+
+namespace rayo {
+
+HeightSamples read_height_image(const std::string& path, const std::string& where,
+                                const FileAccess& access) {
+    const std::string what = "height image '" + path + "'";
+    const std::string bytes =
+        read_input_file(path, where, "height image", kMaxImageFileBytes, access);
+    // Decoded from the bytes read above (not reopened by name), when the format can.
+    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+    auto input = OIIO::ImageInput::create(path);
+    std::unique_ptr<OIIO::ImageInput> in;
+    std::string reason;
+    if (input) {
+        if (input->supports("ioproxy")) input->set_ioproxy(&memory);
+        OIIO::ImageSpec spec, config;
+        if (input->open(path, spec, config)) {
+            in = std::move(input);
+        } else {
+            reason = input->geterror();
+        }
+    } else {
+        reason = OIIO::geterror();
+    }
+    if (!in) {
+        if (reason.empty()) reason = "not an image format OpenImageIO reads";
+        throw InputError(where, what + " cannot be read: " + reason);
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    const uint64_t samples = uint64_t(spec.width) * uint64_t(spec.height);
+    if (spec.width < 2 || spec.height < 2 || spec.depth > 1 || samples > kMaxHeightSamples) {
+        throw InputError(where, what + " is " + std::to_string(spec.width) + "x" +
+                                    std::to_string(spec.height) +
+                                    ": expected at least 2x2 and at most " +
+                                    std::to_string(kMaxHeightSamples) + " samples");
+    }
+    const int channels = spec.nchannels >= 3 ? 3 : 1;
+    std::vector<float> pixels(samples * size_t(channels));
+    // Integer formats convert to value/max in [0, 1] at their full depth; float stays float.
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data())) {
+        throw InputError(where, what + " cannot be read: " + in->geterror());
+    }
+    HeightSamples out;
+    out.columns = spec.width;
+    out.rows = spec.height;
+    if (channels == 1) {
+        out.values = std::move(pixels);
+    } else {
+        out.values.resize(samples);
+        for (size_t i = 0; i < samples; ++i) {  // Rec. 709 luminance
+            out.values[i] =
+                0.2126f * pixels[3 * i] + 0.7152f * pixels[3 * i + 1] + 0.0722f * pixels[3 * i + 2];
+        }
+    }
+    for (size_t i = 0; i < out.values.size(); ++i) {
+        if (!std::isfinite(out.values[i])) {
+            throw InputError(where, what + " has a non-finite value at pixel (" +
+                                        std::to_string(i % size_t(out.columns)) + ", " +
+                                        std::to_string(i / size_t(out.columns)) + ")");
+        }
+    }
+    return out;
+}
+
+}  // namespace rayo
