@@ -7,8 +7,11 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 
 #include "core/accel.h"
+#include "core/shapes/blob_mesh.h"
 #include "core/shapes/csg.h"
 
 namespace rayo {
@@ -200,6 +203,34 @@ TEST(Blob, InCsgAndThroughTheAccel) {
     ASSERT_TRUE(accel.intersect(ray, hit));
     EXPECT_EQ(hit.shape, Shapes::index_of<Blob>());
     EXPECT_NEAR(hit.t, 18.0 - Blob::sphere_radius(one_element().elements[0], 0.4), 1e-5);
+}
+
+TEST(Blob, MarchingTetrahedraMeshIsClosedAndOnTheSurface) {
+    // A lone element's mesh: every vertex within a small fraction of a cell of the sphere (the
+    // edge interpolation's error), normals radial, every edge shared by exactly two triangles.
+    const Blob b = one_element();
+    const double rho = Blob::sphere_radius(b.elements[0], b.threshold), cell = 0.1;
+    const TriangleMesh mesh = tessellate_blob(b, cell);
+    ASSERT_GT(mesh.triangle_count(), 500u);
+    ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
+    const Vec3 c = b.elements[0].center;
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+        const Vec3 offset = mesh.positions[i] - c;
+        EXPECT_NEAR(glm::length(offset), rho, 0.05 * cell) << i;
+        EXPECT_GT(glm::dot(glm::normalize(offset), mesh.normals[i]), 0.9999f) << i;
+    }
+    std::map<std::pair<uint32_t, uint32_t>, int> edges;
+    for (const auto& t : mesh.triangles) {
+        for (int e = 0; e < 3; ++e) {
+            const uint32_t a = t[e], z = t[(e + 1) % 3];
+            ++edges[{std::min(a, z), std::max(a, z)}];
+        }
+        // Wound outward: the face normal points away from the centre.
+        const Vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]],
+                   &p2 = mesh.positions[t[2]];
+        EXPECT_GT(glm::dot(glm::cross(p1 - p0, p2 - p0), p0 + p1 + p2 - 3.0f * c), 0.0f);
+    }
+    for (const auto& edge : edges) ASSERT_EQ(edge.second, 2);
 }
 
 }  // namespace
