@@ -245,12 +245,7 @@ double Blob::sphere_radius(const BlobElement& e, double threshold) {
 }
 
 void Blob::surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const {
-    out.position = ray.at(hit.t);
-    const Vec3 normal = unit_normal_or_facing(hit.normal, ray.direction);
-    out.geometric_normal = normal;
-    out.shading_normal = normal;
-    const Bounds3 b = bounds();
-    out.object_size = max_abs_component(b.upper - b.lower);
+    surface_at_ray_point(ray, hit, bounds(), out);
 }
 
 void Blob::parameterization(const Vec3& position, SurfaceHit& out) const {

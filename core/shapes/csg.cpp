@@ -97,6 +97,8 @@ int Csg::evaluate(int index, const Vec3& origin, const Vec3& direction, ShapeCro
 }
 
 int Csg::crossings_all(const Vec3& origin, const Vec3& direction, ShapeCrossing* out) const {
+    // A tree over the budget (the scene reader refuses one) would overflow the stack buffers.
+    if (leaf_budget_exceeded()) return 0;
     ShapeCrossing scratch[kMaxCsgCrossings];
     return evaluate(static_cast<int>(nodes.size() - 1), origin, direction, out, scratch);
 }
@@ -125,12 +127,7 @@ bool Csg::nearest(const Vec3& origin, const Vec3& direction, float tnear, float 
 }
 
 void Csg::surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const {
-    out.position = ray.at(hit.t);
-    const Vec3 normal = unit_normal_or_facing(hit.normal, ray.direction);
-    out.geometric_normal = normal;
-    out.shading_normal = normal;
-    const Bounds3 b = bounds();
-    out.object_size = max_abs_component(b.upper - b.lower);
+    surface_at_ray_point(ray, hit, bounds(), out);
 }
 
 void Csg::parameterization(const Vec3& position, SurfaceHit& out) const {

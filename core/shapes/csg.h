@@ -83,6 +83,10 @@ struct Csg {
     }
 
     std::optional<FieldProblem> problem() const { return std::nullopt; }
+    // The root's budget (the sum of its leaves') over kMaxCsgCrossings, or no tree at all.
+    bool leaf_budget_exceeded() const {
+        return nodes.empty() || nodes.back().budget > kMaxCsgCrossings;
+    }
     bool closed() const { return true; }
     Bounds3 bounds() const { return nodes.back().bounds; }
     // Writes at most kMaxShapeCrossings (the nearest ones) as the concept says; CSG itself

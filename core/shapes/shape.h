@@ -66,6 +66,17 @@ inline Vec3 unit_normal_or_facing(const Vec3& normal, const Vec3& ray_direction)
     return length_squared > 0.0f ? normal * glm::inversesqrt(length_squared) : -ray_direction;
 }
 
+// surface() of a shape whose intersection reports the normal and whose hit is the ray's point
+// (CSG, blobs): unit normals from hit.normal, the bounds' largest side as the object size.
+inline void surface_at_ray_point(const Ray& ray, const ShapeHit& hit, const Bounds3& bounds,
+                                 SurfaceHit& out) {
+    out.position = ray.at(hit.t);
+    const Vec3 normal = unit_normal_or_facing(hit.normal, ray.direction);
+    out.geometric_normal = normal;
+    out.shading_normal = normal;
+    out.object_size = max_abs_component(bounds.upper - bounds.lower);
+}
+
 // Which type runs the intersection of a shape S (S itself unless it names an Intersector).
 template <typename S, typename = void>
 struct ShapeTraits {

@@ -6,18 +6,10 @@
 #include "apps/scene/json_loader.h"
 #include "apps/scene/renderer.h"
 #include "core/error.h"
+#include "tests/scene/json_error.h"
 
 namespace rayo {
 namespace {
-
-std::string error_of(const std::string& text) {
-    try {
-        load_json_string(text, "s.json", ".");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "no error";
-}
 
 std::string with_object(const std::string& object) {
     return std::string(R"({"rayo": 1,
@@ -59,7 +51,7 @@ TEST(BlobScene, IsACsgChild) {
 
 TEST(BlobScene, BadValuesAreRefusedAtTheirPointer) {
     auto expect_error = [&](const std::string& object, const std::string& message) {
-        const std::string error = error_of(with_object(object));
+        const std::string error = json_error_of(with_object(object));
         EXPECT_NE(error.find(message), std::string::npos) << error;
     };
     expect_error(R"({"type": "blob", "threshold": 0.5, "elements": []})",

@@ -9,18 +9,10 @@
 #include "apps/scene/json_loader.h"
 #include "apps/scene/renderer.h"
 #include "core/error.h"
+#include "tests/scene/json_error.h"
 
 namespace rayo {
 namespace {
-
-std::string error_of(const std::string& text) {
-    try {
-        load_json_string(text, "s.json", ".");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "no error";
-}
 
 const std::string kSphere = R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})";
 const std::string kBox = R"({"type": "box", "min": [0, 0, 0], "max": [1, 1, 1]})";
@@ -51,7 +43,7 @@ TEST(CsgScene, ReadsANestedTreeWithTheObjectsMaterial) {
 
 TEST(CsgScene, BadTreesAreRefusedAtTheirPointer) {
     auto expect_error = [&](const std::string& object, const std::string& message) {
-        const std::string error = error_of(with_object(object));
+        const std::string error = json_error_of(with_object(object));
         EXPECT_NE(error.find(message), std::string::npos) << error;
     };
     expect_error(R"({"type": "csg", "op": "union", "children": []})",
@@ -98,13 +90,13 @@ TEST(CsgScene, BadTreesAreRefusedAtTheirPointer) {
     for (int i = 0; i < kMaxCsgDepth; ++i) {
         eight = R"({"type": "csg", "op": "union", "children": [)" + kSphere + ", " + eight + "]}";
     }
-    EXPECT_EQ(error_of(with_object(eight)), "no error");
+    EXPECT_EQ(json_error_of(with_object(eight)), "no error");
     // More leaves than the crossing budget: 32 quadrics × 4 crossings fit, the 33rd does not.
     std::string wide = kSphere;
     for (int i = 0; i < 5; ++i) {
         wide = R"({"type": "csg", "op": "union", "children": [)" + wide + ", " + wide + "]}";
     }
-    EXPECT_EQ(error_of(with_object(wide)), "no error");  // 32 leaves
+    EXPECT_EQ(json_error_of(with_object(wide)), "no error");  // 32 leaves
     expect_error(R"({"type": "csg", "op": "union", "children": [)" + wide + ", " + kSphere + "]}",
                  "s.json#/objects/0/children/1: expected a CSG whose children cross a line at "
                  "most 128 times in all");
