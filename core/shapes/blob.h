@@ -48,7 +48,7 @@ struct BlobElement {
 constexpr int kMaxBlobElements = 128;
 
 struct Blob {
-    std::vector<BlobElement> elements;
+    std::vector<BlobElement> elements{BlobElement{}};  // the scene file gives them all
     float threshold = 0.5f;
     uint32_t material = 0;
 

@@ -88,7 +88,7 @@ struct Csg {
         return nodes.empty() || nodes.back().budget > kMaxCsgCrossings;
     }
     bool closed() const { return true; }
-    Bounds3 bounds() const { return nodes.back().bounds; }
+    Bounds3 bounds() const { return nodes.empty() ? Bounds3{} : nodes.back().bounds; }
     // Writes at most kMaxShapeCrossings (the nearest ones) as the concept says; CSG itself
     // uses crossings_all.
     int crossings(const Vec3& origin, const Vec3& direction,
