@@ -399,6 +399,8 @@ class SceneParser {
                     return "an array of numbers";
                 case FieldKind::Box:
                     return "{\"min\": [x, y, z], \"max\": [x, y, z]}";
+                case FieldKind::Records:
+                    return "an array of objects";
             }
             return "a value";
         }
@@ -439,6 +441,19 @@ class SceneParser {
             member.upper =
                 parser.vec3(parser.require(value, where, "max", "[x, y, z]"), child(where, "max"));
         }
+        // An array of records, each an object of T's own fields (blob elements).
+        template <typename T>
+        void read(const Json& value, const std::string& where, std::vector<T>& member,
+                  FieldKind kind) {
+            if (!value.is_array()) {
+                parser.fail(where,
+                            std::string("expected ") + expected(kind) + ", got " + describe(value));
+            }
+            member.clear();
+            for (size_t i = 0; i < value.size(); ++i) {
+                member.push_back(parser.read_record<T>(value[i], child(where, i), {}));
+            }
+        }
         template <typename T>
         void operator()(const char* name, T& member, FieldKind kind) {
             read(parser.require(object, pointer, name, expected(kind)), child(pointer, name),
@@ -464,19 +479,24 @@ class SceneParser {
         }
     };
 
-    template <typename S>
-    void parse_shape(const Json& value, const std::string& pointer, std::vector<S>& out) const {
-        // The keys a shape of type S may have: its fields, "type" and "material" (once per type).
-        static const std::vector<std::string> keys = [] {
-            FieldNames names{{"type", "material"}};
-            S().fields(names);
+    // An object read by T's fields() and checked by its problem(); `extra_keys` are the other
+    // keys it may have.
+    template <typename T>
+    T read_record(const Json& value, const std::string& pointer,
+                  const std::vector<std::string>& extra_keys) const {
+        require_object(value, pointer, "an object");
+        static const std::vector<std::string> field_keys = [] {
+            FieldNames names;
+            T().fields(names);
             return names.names;
         }();
+        std::vector<std::string> keys = extra_keys;
+        keys.insert(keys.end(), field_keys.begin(), field_keys.end());
         check_keys(value, pointer, keys);
-        S shape;
+        T record;
         FieldReader reader{*this, value, pointer};
-        shape.fields(reader);
-        if (const std::optional<FieldProblem> problem = shape.problem()) {
+        record.fields(reader);
+        if (const std::optional<FieldProblem> problem = record.problem()) {
             // The field may be a path into a nested object ("bounds/max").
             std::string where = pointer;
             size_t from = 0;
@@ -486,8 +506,86 @@ class SceneParser {
             }
             fail(child(where, problem->field.substr(from)), problem->message);
         }
+        return record;
+    }
+
+    template <typename S>
+    void parse_shape(const Json& value, const std::string& pointer, std::vector<S>& out) const {
+        S shape = read_record<S>(value, pointer, {"type", "material"});
         shape.material = material_of(value, pointer);
-        out.push_back(shape);
+        out.push_back(std::move(shape));
+    }
+
+    // A CSG object (core/shapes/csg.h): its tree, read into one Csg.
+    void parse_shape(const Json& value, const std::string& pointer, std::vector<Csg>& out) const {
+        Csg csg;
+        parse_csg_operation(value, pointer, 1, csg);
+        csg.material = material_of(value, pointer);
+        out.push_back(std::move(csg));
+    }
+    // An operation at nesting `depth` (1 for the object itself); returns its node.
+    int parse_csg_operation(const Json& value, const std::string& pointer, int depth,
+                            Csg& csg) const {
+        if (depth > kMaxCsgDepth) {
+            fail(pointer, "expected CSG nested at most " + std::to_string(kMaxCsgDepth) +
+                              " deep (core/shapes/csg.h)");
+        }
+        check_keys(value, pointer,
+                   depth == 1 ? std::vector<std::string>{"type", "op", "children", "material"}
+                              : std::vector<std::string>{"type", "op", "children"});
+        const std::string op =
+            choice(require(value, pointer, "op", "\"union\", \"intersection\" or \"difference\""),
+                   child(pointer, "op"), {"union", "intersection", "difference"});
+        const std::string where = child(pointer, "children");
+        const Json& children = require(value, pointer, "children", "an array of 2 closed shapes");
+        if (!children.is_array() || children.size() != 2) {
+            fail(where, "expected an array of 2 closed shapes, got " + describe(children));
+        }
+        const int left = parse_csg_child(children[0], child(where, size_t(0)), depth, csg);
+        const int right = parse_csg_child(children[1], child(where, size_t(1)), depth, csg);
+        return csg.add_operation(op == "union"          ? CsgOp::Union
+                                 : op == "intersection" ? CsgOp::Intersection
+                                                        : CsgOp::Difference,
+                                 left, right);
+    }
+    int parse_csg_child(const Json& value, const std::string& pointer, int depth, Csg& csg) const {
+        // Any closed primitive shape (core/shapes/primitives.h) or another CSG.
+        static const std::vector<std::string> types = [] {
+            std::vector<std::string> names = ShapeSet<PrimitiveShapes>::names();
+            names.push_back(Csg::kName);
+            return names;
+        }();
+        static const std::string expected_type = [] {
+            std::vector<std::string> quoted;
+            for (const std::string& t : types) quoted.push_back("\"" + t + "\"");
+            return join_or(quoted);
+        }();
+        require_object(value, pointer, "a closed shape");
+        if (find(value, "material")) {
+            fail(child(pointer, "material"),
+                 "a CSG child takes the material of its CSG object: give \"material\" there");
+        }
+        const std::string type =
+            choice(require(value, pointer, "type", expected_type), child(pointer, "type"), types);
+        if (type == Csg::kName) return parse_csg_operation(value, pointer, depth + 1, csg);
+        int node = -1;
+        ShapeSet<PrimitiveShapes> one;
+        one.for_each([&](auto& shapes) {
+            if (type != ShapeOf<decltype(shapes)>::kName) return;
+            parse_shape(value, pointer, shapes);
+            if (!is_closed(shapes.back())) {
+                fail(pointer,
+                     "expected a closed shape (a solid) as a CSG child, got an open " + type);
+            }
+            node = csg.add_leaf(shapes.back());
+        });
+        if (csg.leaf_budget() > kMaxCsgCrossings) {
+            fail(pointer, "expected a CSG whose children cross a line at most " +
+                              std::to_string(kMaxCsgCrossings) +
+                              " times in all (core/shapes/csg.h); this child makes it " +
+                              std::to_string(csg.leaf_budget()));
+        }
+        return node;
     }
 
     void parse_camera(const Json& value, const std::string& pointer, CameraDesc& camera) const;

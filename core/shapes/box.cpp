@@ -50,8 +50,8 @@ int Box::crossings(const Vec3& origin, const Vec3& direction,
     float t_enter, t_exit;
     Vec3 n_enter, n_exit;
     if (!slabs(origin, direction, t_enter, n_enter, t_exit, n_exit)) return 0;
-    out[0] = {t_enter, true};
-    out[1] = {t_exit, false};
+    out[0] = {t_enter, true, n_enter};
+    out[1] = {t_exit, false, n_exit};
     return 2;
 }
 

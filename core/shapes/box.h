@@ -29,6 +29,7 @@ struct Box {
                   ShapeCrossing out[kMaxShapeCrossings]) const;
     bool nearest(const Vec3& origin, const Vec3& direction, float tnear, float tfar,
                  ShapeHit& hit) const;
+    bool closed() const { return true; }
     void surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const;
     void parameterization(const Vec3& position, SurfaceHit& out) const;
     // The twelve edges.

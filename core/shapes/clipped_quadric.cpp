@@ -80,8 +80,8 @@ int inside_intervals(double a, double b, double c, Interval out[2]) {
 
 }  // namespace
 
-int ClippedQuadric::crossings(const Vec3& o, const Vec3& d, ShapeCrossing out[kMaxShapeCrossings],
-                              Vec3* normals) const {
+int ClippedQuadric::crossings(const Vec3& o, const Vec3& d,
+                              ShapeCrossing out[kMaxShapeCrossings]) const {
     const DMat3 to_local_rotation = glm::transpose(rotation);
     const DVec3 lo = to_local_rotation * (DVec3(o) - origin);
     const DVec3 ld = to_local_rotation * DVec3(d);
@@ -105,8 +105,7 @@ int ClippedQuadric::crossings(const Vec3& o, const Vec3& d, ShapeCrossing out[kM
         if (!capped && end.on_box) return;
         DVec3 normal = end.face;
         if (!end.on_box) normal = 2.0 * (m * (p + end.t * ld)) + g;  // ∇q
-        out[n] = {static_cast<float>(shift + end.t), entering};
-        if (normals) normals[n] = Vec3(rotation * normal);
+        out[n] = {static_cast<float>(shift + end.t), entering, Vec3(rotation * normal)};
         ++n;
     };
     for (int k = 0; k < count; ++k) {
@@ -122,12 +121,11 @@ int ClippedQuadric::crossings(const Vec3& o, const Vec3& d, ShapeCrossing out[kM
 bool ClippedQuadric::nearest(const Vec3& o, const Vec3& d, float tnear, float tfar,
                              ShapeHit& hit) const {
     ShapeCrossing crossing[kMaxShapeCrossings];
-    Vec3 normals[kMaxShapeCrossings];
-    const int n = crossings(o, d, crossing, normals);
+    const int n = crossings(o, d, crossing);
     for (int i = 0; i < n; ++i) {
         if (crossing[i].t > tnear && crossing[i].t < tfar) {
             hit.t = crossing[i].t;
-            hit.normal = normals[i];
+            hit.normal = crossing[i].normal;
             return true;
         }
     }
@@ -150,10 +148,8 @@ float ClippedQuadric::size() const {
 
 void ClippedQuadric::surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const {
     out.position = ray.at(hit.t);
-    const float length_squared = glm::dot(hit.normal, hit.normal);
-    // A zero gradient (a cone's apex, a point where the surface is singular): face the ray.
-    const Vec3 normal =
-        length_squared > 0.0f ? hit.normal * glm::inversesqrt(length_squared) : -ray.direction;
+    // A zero gradient (a cone's apex, a point where the surface is singular) faces the ray.
+    const Vec3 normal = unit_normal_or_facing(hit.normal, ray.direction);
     out.geometric_normal = normal;
     out.shading_normal = normal;
     out.object_size = size();

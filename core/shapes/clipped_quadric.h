@@ -35,9 +35,10 @@ struct ClippedQuadric {
     bool capped = true;
 
     // Every crossing of the line o + t·d (unit d, world space), sorted by t, with the outward
-    // normals (world space, any length) in `normals` when given.
-    int crossings(const Vec3& o, const Vec3& d, ShapeCrossing out[kMaxShapeCrossings],
-                  Vec3* normals = nullptr) const;
+    // normals (world space, any length).
+    int crossings(const Vec3& o, const Vec3& d, ShapeCrossing out[kMaxShapeCrossings]) const;
+    // A solid unless `capped` is false (CSG children must be solids).
+    bool closed() const { return capped; }
     // The first crossing with t in (tnear, tfar), tested after rounding t to float.
     bool nearest(const Vec3& o, const Vec3& d, float tnear, float tfar, ShapeHit& hit) const;
 
@@ -94,6 +95,7 @@ struct QuadricShape {
                  ShapeHit& hit) const {
         return self().intersector().nearest(origin, direction, tnear, tfar, hit);
     }
+    bool closed() const { return self().intersector().closed(); }
     void surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const {
         self().intersector().surface(ray, hit, out);
     }

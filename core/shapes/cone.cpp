@@ -115,7 +115,7 @@ int ConeFrame::crossings(const Vec3& origin, const Vec3& direction,
     while (count < kMaxShapeCrossings &&
            intersect_cone(*this, origin, direction, tnear, std::numeric_limits<float>::max(), t,
                           normal)) {
-        out[count++] = {t, glm::dot(direction, normal) < 0.0f};
+        out[count++] = {t, glm::dot(direction, normal) < 0.0f, normal};
         tnear = t;
     }
     return count;

@@ -29,7 +29,7 @@ int Disk::crossings(const Vec3& origin, const Vec3& direction,
     const float t = glm::dot(normal, center - origin) / denominator;
     const Vec3 offset = origin + t * direction - center;
     if (!(glm::dot(offset, offset) <= radius * radius)) return 0;
-    out[0] = {t, denominator < 0.0f};
+    out[0] = {t, denominator < 0.0f, normal};
     return 1;
 }
 

@@ -1,19 +1,23 @@
 #pragma once
 // The analytic shapes rayo knows. Adding a shape is its file pair (core/shapes/NAME.h/.cpp, a
-// Shape as core/shapes/shape.h describes) and its line here; the accel, the scene validation,
-// the JSON reader and `rayo info` all iterate this list (docs/architecture.md).
-#include "core/shapes/box.h"
-#include "core/shapes/cone.h"
-#include "core/shapes/disk.h"
-#include "core/shapes/quadric.h"
-#include "core/shapes/quadric_forms.h"
+// Shape as core/shapes/shape.h describes) and its line in core/shapes/primitives.h (a composite
+// shape, made of others: here); the accel, the scene validation, the JSON reader and `rayo info`
+// all iterate this list (docs/architecture.md).
+#include "core/shapes/csg.h"
+#include "core/shapes/primitives.h"
 #include "core/shapes/shape_set.h"
-#include "core/shapes/sphere.h"
 
 namespace rayo {
 
-using AnalyticShapes =
-    ShapeList<Sphere, Cone, Disk, Box, Quadric, Ellipsoid, Cylinder, Paraboloid, Hyperboloid>;
+template <typename List, typename... More>
+struct AppendShapes;
+template <typename... S, typename... More>
+struct AppendShapes<ShapeList<S...>, More...> {
+    using type = ShapeList<S..., More...>;
+};
+
+// The composites come last: the primitives keep their indices (SurfaceHit::shape).
+using AnalyticShapes = typename AppendShapes<PrimitiveShapes, Csg>::type;
 using Shapes = ShapeSet<AnalyticShapes>;
 
 }  // namespace rayo

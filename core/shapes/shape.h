@@ -9,7 +9,10 @@
 //   std::optional<FieldProblem> problem() const;  // what is wrong with it, after the fields
 //   Bounds3 bounds() const;
 //   int crossings(const Vec3& o, const Vec3& d, ShapeCrossing out[kMaxShapeCrossings]) const;
-//       // every crossing of the line o + t·d (any t), sorted by t, entering or leaving
+//       // every crossing of the line o + t·d (any t), sorted by t, entering or leaving, with
+//       // the outward normal there
+//   bool closed() const;  // optional: true when the shape bounds a solid (CSG takes only
+//       // closed shapes as children: core/shapes/csg.h); a shape without it is open
 //   bool nearest(const Vec3& o, const Vec3& d, float tnear, float tfar, ShapeHit& hit) const;
 //       // the first crossing in (tnear, tfar) and the outward normal there: the hot path
 //   void surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const;
@@ -37,10 +40,12 @@ struct Bounds3 {
 };
 
 // A crossing of a ray's line with a shape's surface; `entering` when the ray goes from outside
-// to inside there (for open surfaces: against the outward normal).
+// to inside there (for open surfaces: against the outward normal); `normal` is the outward
+// normal there (any length), what CSG reports when the crossing bounds its result.
 struct ShapeCrossing {
     float t = 0.0f;
     bool entering = true;
+    Vec3 normal{0.0f};
 };
 // A quadric solid clipped to a box (core/shapes/clipped_quadric.h) has the most: two inside
 // intervals of the quadric (a hyperboloid along its axis) within the box's one.
@@ -55,6 +60,24 @@ struct ShapeHit {
     Vec3 normal{0.0f};
     uint32_t part = 0;
 };
+
+// The unit outward normal of a hit from the normal the intersection reported (any length); a
+// zero one (a singular point of the surface) faces the ray instead.
+inline Vec3 unit_normal_or_facing(const Vec3& normal, const Vec3& ray_direction) {
+    const float length_squared = glm::dot(normal, normal);
+    return length_squared > 0.0f ? normal * glm::inversesqrt(length_squared) : -ray_direction;
+}
+
+// surface() of a shape whose intersection reports the normal and whose hit is the ray's point
+// (CSG, blobs): unit normals from hit.normal, the bounds' largest side as the object size.
+inline void surface_at_ray_point(const Ray& ray, const ShapeHit& hit, const Bounds3& bounds,
+                                 SurfaceHit& out) {
+    out.position = ray.at(hit.t);
+    const Vec3 normal = unit_normal_or_facing(hit.normal, ray.direction);
+    out.geometric_normal = normal;
+    out.shading_normal = normal;
+    out.object_size = max_abs_component(bounds.upper - bounds.lower);
+}
 
 // Which type runs the intersection of a shape S (S itself unless it names an Intersector).
 template <typename S, typename = void>

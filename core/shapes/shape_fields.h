@@ -20,6 +20,7 @@ enum class FieldKind {
     Flag,         // bool
     Numbers,      // std::array<double, N>: exactly N finite numbers, kept in double
     Box,          // Bounds3: an object {"min": [x, y, z], "max": [x, y, z]}
+    Records,      // std::vector<T>: an array of objects, each read by T's own fields()
 };
 
 // A constraint between fields that failed: the field to blame and what was expected.

@@ -8,8 +8,8 @@ int Sphere::crossings(const Vec3& origin, const Vec3& direction,
                       ShapeCrossing out[kMaxShapeCrossings]) const {
     float t0, t1;
     if (!sphere_roots_stable(origin, direction, center, radius, t0, t1)) return 0;
-    out[0] = {t0, true};
-    out[1] = {t1, false};
+    out[0] = {t0, true, origin + t0 * direction - center};
+    out[1] = {t1, false, origin + t1 * direction - center};
     return 2;
 }
 
@@ -28,6 +28,11 @@ void Sphere::surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const
 }
 
 void Sphere::parameterization(const Vec3& position, SurfaceHit& out) const {
+    spherical_parameterization(center, radius, position, out);
+}
+
+void spherical_parameterization(const Vec3& center, float radius, const Vec3& position,
+                                SurfaceHit& out) {
     // Spherical coordinates about +y: n = (sinθ·sinφ, cosθ, sinθ·cosφ), u = 1/2 + φ/2π, v = θ/π;
     // ∂p/∂u = 2π·r·(n.z, 0, −n.x).
     const Vec3 n = (position - center) / radius;
@@ -43,6 +48,17 @@ void Sphere::pieces(SurfacePieces& out) const {
     piece.origin = DVec3(center);
     piece.frame = glm::dmat3(static_cast<double>(radius));
     out.push_back(piece);
+}
+
+void bounds_parameterization(const Bounds3& bounds, const Vec3& position, SurfaceHit& out) {
+    const Vec3 centre = 0.5f * (bounds.lower + bounds.upper);
+    const float radius = glm::length(position - centre);
+    if (radius > 0.0f) {
+        spherical_parameterization(centre, radius, position, out);
+    } else {
+        out.uv = glm::vec2(0.0f);
+        out.dpdu = Vec3(0.0f);
+    }
 }
 
 void Sphere::outline(Outline& out) const {

@@ -45,6 +45,7 @@ struct Sphere {
     template <SphereMath kMath = SphereMath::Stable>
     bool nearest(const Vec3& origin, const Vec3& direction, float tnear, float tfar,
                  ShapeHit& hit) const;
+    bool closed() const { return true; }
     void surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) const;
     void parameterization(const Vec3& position, SurfaceHit& out) const;
     // The silhouette from out.view().eye: the circle where the cone of rays from the eye
@@ -53,6 +54,13 @@ struct Sphere {
     // Its surface as parametric pieces for tessellation (core/shapes/tessellation.h).
     void pieces(SurfacePieces& out) const;
 };
+
+// uv and dpdu of a point at distance `radius` from `center`, in spherical coordinates about +y
+// (the sphere's parameterization; CSG uses it about the centre of its bounds).
+void spherical_parameterization(const Vec3& center, float radius, const Vec3& position,
+                                SurfaceHit& out);
+// The same about the centre of a box (shapes with no natural parameterization: CSG, blobs).
+void bounds_parameterization(const Bounds3& bounds, const Vec3& position, SurfaceHit& out);
 
 // The seed's rule for two roots t0 <= t1: the near root if it lies in (tnear, tfar), else the
 // far root (the ray starts inside: seed 000 hits at t1 and flips the normal).

@@ -209,6 +209,7 @@ TEST(Outline, EveryRegisteredShapeHasOne) {
     // draws something (a new shape without outline() does not compile in draw_wireframe).
     Shapes shapes;
     shapes.for_each([](auto& v) { v.emplace_back(); });
+    shapes.of<Csg>().front().add_leaf(Sphere{});  // a CSG is built, its default is empty
     shapes.for_each([](const auto& v) {
         Outline out = outline_from(DVec3(0.3, 0.4, 6.0));
         v.front().outline(out);

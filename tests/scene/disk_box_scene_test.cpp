@@ -5,6 +5,7 @@
 #include "apps/scene/json_loader.h"
 #include "apps/scene/renderer.h"
 #include "core/error.h"
+#include "tests/scene/json_error.h"
 
 namespace rayo {
 namespace {
@@ -19,15 +20,6 @@ const char* kScene = R"({
     {"type": "box", "min": [-1, -1, -1], "max": [1, 1, 1], "material": "red"}
   ]
 })";
-
-std::string error_of(const std::string& text) {
-    try {
-        load_json_string(text, "s.json", ".");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "no error";
-}
 
 TEST(DiskBoxScene, LoadsWithDefaultsAndRendersBoth) {
     const SceneDescription d = load_json_string(kScene, "s.json", ".");
@@ -48,23 +40,23 @@ TEST(DiskBoxScene, ErrorsNameTheJsonPointer) {
     auto with_object = [](const std::string& object) {
         return std::string(R"({"rayo": 1, "camera": {"vfov": 40}, "objects": [)") + object + "]}";
     };
-    EXPECT_NE(error_of(with_object(R"({"type": "disk", "center": [0, 0, 0]})"))
+    EXPECT_NE(json_error_of(with_object(R"({"type": "disk", "center": [0, 0, 0]})"))
                   .find("s.json#/objects/0/radius: missing required field \"radius\""),
               std::string::npos);
-    EXPECT_NE(error_of(with_object(R"({"type": "disk", "center": [0,0,0], "radius": 1,
+    EXPECT_NE(json_error_of(with_object(R"({"type": "disk", "center": [0,0,0], "radius": 1,
                                        "normal": [0, 0, 0]})"))
                   .find("s.json#/objects/0/normal: expected a non-zero direction"),
               std::string::npos);
-    EXPECT_NE(error_of(with_object(R"({"type": "box", "min": [0, 0, 0], "max": [1, 0, 1]})"))
+    EXPECT_NE(json_error_of(with_object(R"({"type": "box", "min": [0, 0, 0], "max": [1, 0, 1]})"))
                   .find("s.json#/objects/0/max: expected max > min on every axis"),
               std::string::npos);
-    EXPECT_NE(error_of(with_object(R"({"type": "box", "min": [0, 0, 0], "max": [1, 1, 1],
+    EXPECT_NE(json_error_of(with_object(R"({"type": "box", "min": [0, 0, 0], "max": [1, 1, 1],
                                        "radius": 2})"))
                   .find("s.json#/objects/0/radius: unknown key"),
               std::string::npos);
-    EXPECT_NE(error_of(with_object(R"({"type": "torus"})"))
+    EXPECT_NE(json_error_of(with_object(R"({"type": "torus"})"))
                   .find("\"box\", \"quadric\", \"ellipsoid\", \"cylinder\", \"paraboloid\", "
-                        "\"hyperboloid\", \"triangle\""),
+                        "\"hyperboloid\", \"blob\", \"csg\", \"triangle\""),
               std::string::npos);
 }
 

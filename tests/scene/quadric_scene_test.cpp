@@ -6,6 +6,7 @@
 #include "apps/scene/json_loader.h"
 #include "apps/scene/renderer.h"
 #include "core/error.h"
+#include "tests/scene/json_error.h"
 
 namespace rayo {
 namespace {
@@ -25,15 +26,6 @@ const char* kScene = R"({
      "semi_axis": 0.5, "height": 2, "sheets": 2}
   ]
 })";
-
-std::string error_of(const std::string& text) {
-    try {
-        load_json_string(text, "s.json", ".");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "no error";
-}
 
 TEST(QuadricScene, LoadsFieldsWithDefaultsAndRenders) {
     const SceneDescription d = load_json_string(kScene, "s.json", ".");
@@ -64,7 +56,7 @@ TEST(QuadricScene, ErrorsNameTheJsonPointer) {
         return std::string(R"({"rayo": 1, "camera": {"vfov": 40}, "objects": [)") + object + "]}";
     };
     auto expect_error = [&](const std::string& object, const std::string& message) {
-        const std::string error = error_of(with_object(object));
+        const std::string error = json_error_of(with_object(object));
         EXPECT_NE(error.find(message), std::string::npos) << error;
     };
     const std::string sphere = R"("coefficients": [1, 1, 1, 0, 0, 0, 0, 0, 0, -1])";

@@ -10,6 +10,7 @@
 #include "apps/scene/scene_loader.h"
 #include "core/error.h"
 #include "shading/texture.h"
+#include "tests/scene/json_error.h"
 #include "tests/test_helpers.h"
 
 namespace rayo {
@@ -102,12 +103,7 @@ std::string scene_with(const std::string& textures, const std::string& material)
 }
 
 std::string load_error(const std::string& text) {
-    try {
-        load_json_string(text, "t.json", ".");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "no error";
+    return json_error_of(text, "t.json");
 }
 
 TEST(TextureJson, MaterialsNameTexturesForColoursAndBump) {
