@@ -130,7 +130,9 @@ void RadiosityField::set_solution(const std::vector<DVec3>& radiosity) {
 }
 
 bool RadiosityField::reflected(const SurfaceHit& hit, Vec3& radiance) const {
-    if (hit.shape != kTriangleShape || hit.mesh >= m_cuts.size() || m_patch_radiance.empty()) {
+    // Instanced meshes (hit.instance) are not patches: radiosity solves Scene::meshes only.
+    if (hit.shape != kTriangleShape || hit.instance != kNoInstance || hit.mesh >= m_cuts.size() ||
+        m_patch_radiance.empty()) {
         return false;
     }
     const TriangleMesh& mesh = m_scene.meshes[hit.mesh];
