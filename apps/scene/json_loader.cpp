@@ -1108,7 +1108,7 @@ Instance SceneParser::parse_instance(const Json& value, const std::string& point
     if (it == m_group_ids.end()) {
         std::vector<std::string> known;
         for (const auto& entry : m_group_ids) known.push_back(entry.first);
-        fail(of_pointer, "unknown group " + describe(of) + " (defined in /groups: " +
+        fail(of_pointer, "unknown group \"" + of.get<std::string>() + "\" (defined in /groups: " +
                              (known.empty() ? std::string("none") : join(known)) + ")");
     }
     Instance instance;
@@ -1119,6 +1119,9 @@ Instance SceneParser::parse_instance(const Json& value, const std::string& point
         // The accel needs M and M⁻¹ in float: both finite, within the scene magnitude, and
         // det M ≠ 0 in float.
         const glm::mat4 f(m);
+        if (glm::determinant(glm::mat3(f)) == 0.0f) {
+            fail(where, "expected an invertible transform, got a singular one (determinant 0)");
+        }
         const glm::mat4 inverse = glm::inverse(f);
         for (int c = 0; c < 4; ++c) {
             for (int r = 0; r < 4; ++r) {
@@ -1128,9 +1131,6 @@ Instance SceneParser::parse_instance(const Json& value, const std::string& point
                                     kSceneMagnitudeRule);
                 }
             }
-        }
-        if (glm::determinant(glm::mat3(f)) == 0.0f) {
-            fail(where, "expected an invertible transform, got a singular one (determinant 0)");
         }
         instance.transform = f;
     }

@@ -140,9 +140,11 @@ TEST(InstanceScene, ErrorsNameTheirPointer) {
          "s.json#/objects/0/transform", "singular"},
         {with_instance(R"({"type": "instance", "of": "g", "transform":
              {"matrix": [[1e30, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]}})"),
-         "s.json#/objects/0/transform", "fit in floats"},
+         "s.json#/objects/0/transform/matrix/0/0", "magnitude <= 1e18"},
         {with_instance(R"({"type": "instance", "of": "g", "transform": {"scale": 1e-20}})"),
-         "s.json#/objects/0/transform", "fit in floats"},
+         "s.json#/objects/0/transform", "expected an invertible transform"},
+        {with_instance(R"({"type": "instance", "of": "g", "transform": {"scale": [1e-19, 1e10, 1e9]}})"),
+         "s.json#/objects/0/transform", "inverse fit in floats"},
         {with_instance(R"({"type": "instance", "of": "g", "transform":
              {"matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]]}})"),
          "s.json#/objects/0/transform/matrix/3", "[0, 0, 0, 1]"},
@@ -165,7 +167,7 @@ TEST(InstanceScene, ErrorsNameTheirPointer) {
          "s.json#/objects/0/depth", "expected an integer in [0, 6]"},
         {head + R"("objects": [{"type": "sphereflake", "center": [0, 0, 0], "radius": 0,
              "depth": 2}]})",
-         "s.json#/objects/0/radius", "positive"},
+         "s.json#/objects/0/radius", "expected a number > 0"},
     };
     for (const Case& c : cases) {
         const std::string error = error_of(c.text);
