@@ -26,7 +26,7 @@ def scene(n: int) -> dict:
     extent = half + spacing
     return {
         "rayo": 1,
-        "camera": {"eye": [0, 0.55 * extent, 1.15 * extent], "look_at": [0, -2, -0.1 * extent],
+        "camera": {"eye": [0, 0.75 * extent, 1.1 * extent], "look_at": [0, -2, -0.25 * extent],
                    "vfov": 50, "width": 1024, "height": 1024},
         "render": {"max_depth": 2},
         "background": [0.078, 0.361, 0.753],
