@@ -73,14 +73,15 @@ size_t attach_objects(RTCScene scene, std::vector<std::unique_ptr<GeometryBindin
     objects.shapes.for_each([&](const auto& shapes) {
         using S = ShapeOf<decltype(shapes)>;
         if (!shapes.empty()) {
-            primitives += attach(scene, bindings, make_binding(shapes, Shapes::index_of<S>(), options));
+            primitives +=
+                attach(scene, bindings, make_binding(shapes, Shapes::index_of<S>(), options));
         }
     });
     for (size_t m = 0; m < objects.meshes.size(); ++m) {
         if (objects.meshes[m].triangles.empty()) continue;
-        primitives += attach(scene, bindings,
-                             make_mesh_binding(objects.meshes[m], static_cast<uint32_t>(m),
-                                               kTriangleShape));
+        primitives +=
+            attach(scene, bindings,
+                   make_mesh_binding(objects.meshes[m], static_cast<uint32_t>(m), kTriangleShape));
     }
     return primitives;
 }
@@ -110,10 +111,10 @@ Accel::Accel(const Scene& scene, const AccelOptions& options) : m_options(option
     }
     for (size_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& instance = scene.instances[i];
-        m_primitive_count += attach(m_rtc_scene, m_bindings,
-                                    std::make_unique<InstanceBinding>(m_groups[instance.group],
-                                                                      instance,
-                                                                      static_cast<uint32_t>(i)));
+        m_primitive_count +=
+            attach(m_rtc_scene, m_bindings,
+                   std::make_unique<InstanceBinding>(m_groups[instance.group], instance,
+                                                     static_cast<uint32_t>(i)));
     }
     m_instance_count = scene.instances.size();
     rtcCommitScene(m_rtc_scene);

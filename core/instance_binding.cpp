@@ -19,8 +19,8 @@ InstanceBinding::InstanceBinding(const GroupScene& group, const Instance& instan
       m_material(instance.material),
       m_index(instance_index) {
     const glm::mat3 linear(instance.transform);
-    m_size_scale = glm::max(glm::length(linear[0]), glm::max(glm::length(linear[1]),
-                                                             glm::length(linear[2])));
+    m_size_scale =
+        glm::max(glm::length(linear[0]), glm::max(glm::length(linear[1]), glm::length(linear[2])));
     // Embree's affine transform as 4 columns of 3 floats (the last column the translation).
     float xfm[12];
     for (int c = 0; c < 4; ++c) {

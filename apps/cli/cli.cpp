@@ -377,13 +377,11 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "  primitives                  " << r.primitives << " (" << shape_summary(d.scene)
         << ")\n";
     if (r.instances > 0) {
-        out << "  instances                   " << r.instances << " of "
-            << d.scene.groups.size() << " group(s): " << r.stored_primitives
-            << " primitives stored, " << d.scene.instanced_object_count()
-            << " objects placed through instances\n";
+        out << "  instances                   " << r.instances << " of " << d.scene.groups.size()
+            << " group(s): " << r.stored_primitives << " primitives stored, "
+            << d.scene.instanced_object_count() << " objects placed through instances\n";
     }
-    out
-        << "  materials, lights           " << d.shading.materials.size() << ", "
+    out << "  materials, lights           " << d.shading.materials.size() << ", "
         << d.shading.lights.size() << "\n"
         << "  max depth                   " << d.settings.whitted.max_depth << "\n"
         << "  time parse                  " << format_duration(parse_s) << "\n"

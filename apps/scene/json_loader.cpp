@@ -1196,8 +1196,8 @@ void SceneParser::parse_object(const Json& value, const std::string& pointer, Sc
         // Spheres generated as the SPD "balls" scene places them (apps/scene/sphereflake.h):
         // a scene of many spheres without a file of them.
         check_keys(value, pointer, {"type", "center", "radius", "depth", "axis", "material"});
-        const Vec3 center = vec3(require(value, pointer, "center", "[x, y, z]"),
-                                 child(pointer, "center"));
+        const Vec3 center =
+            vec3(require(value, pointer, "center", "[x, y, z]"), child(pointer, "center"));
         const float radius = real(require(value, pointer, "radius", "a positive number"),
                                   child(pointer, "radius"), Bound::Positive);
         const int depth = integer(require(value, pointer, "depth", "an integer"),
@@ -1243,8 +1243,8 @@ glm::dmat4 SceneParser::parse_transform(const Json& value, const std::string& po
             for (size_t c = 0; c < 4; ++c) {
                 const double x = real(row[c], child(row_pointer, c));
                 if (r == 3 && x != (c == 3 ? 1.0 : 0.0)) {
-                    fail(row_pointer, "expected [0, 0, 0, 1] (an affine matrix), got " +
-                                          describe(row));
+                    fail(row_pointer,
+                         "expected [0, 0, 0, 1] (an affine matrix), got " + describe(row));
                 }
                 m[static_cast<int>(c)][static_cast<int>(r)] = x;  // glm: m[column][row]
             }

@@ -43,17 +43,17 @@ void check_material_ids(const SceneDescription& d) {
         for (size_t m = 0; m < objects.meshes.size(); ++m) {
             const TriangleMesh& mesh = objects.meshes[m];
             if (mesh.materials.size() != mesh.triangles.size()) {
-                throw InputError(d.source, prefix + "mesh " + std::to_string(m) + " has " +
-                                               std::to_string(mesh.triangles.size()) +
-                                               " triangles but " +
-                                               std::to_string(mesh.materials.size()) +
-                                               " material ids");
+                throw InputError(d.source,
+                                 prefix + "mesh " + std::to_string(m) + " has " +
+                                     std::to_string(mesh.triangles.size()) + " triangles but " +
+                                     std::to_string(mesh.materials.size()) + " material ids");
             }
             for (uint32_t id : mesh.materials) check(id, prefix + "mesh " + std::to_string(m));
         }
     };
     check_objects(d.scene, "");
-    for (const ShapeGroup& group : d.scene.groups) check_objects(group, "group " + group.name + ": ");
+    for (const ShapeGroup& group : d.scene.groups)
+        check_objects(group, "group " + group.name + ": ");
     for (size_t i = 0; i < d.scene.instances.size(); ++i) {
         const Instance& instance = d.scene.instances[i];
         if (instance.group >= d.scene.groups.size()) {

@@ -37,7 +37,8 @@ void add_sphereflake(std::vector<Sphere>& spheres, const Vec3& center, float rad
 }
 
 SceneDescription make_sphereflake(int depth, int width, int height) {
-    if (depth < 0 || depth > kMaxSphereflakeDepth) throw InputError("sphereflake", "depth must be in [0, 6]");
+    if (depth < 0 || depth > kMaxSphereflakeDepth)
+        throw InputError("sphereflake", "depth must be in [0, 6]");
     SceneDescription d;
     d.source = "<sphereflake " + std::to_string(depth) + ">";
     d.scene.camera.eye = Vec3(2.1f, 1.3f, 1.7f);

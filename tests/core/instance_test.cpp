@@ -117,8 +117,7 @@ void expect_closed_form_hit(const Placed& placed, const Ray& ray) {
     const glm::dvec3 p_object = o + t * d;
     const glm::dvec3 p = glm::dvec3(m * glm::dvec4(p_object, 1.0));
     // The implicit F(p) = |M⁻¹p|² − 1 has gradient 2·M⁻ᵀ·M⁻¹p: the inverse transpose.
-    const glm::dvec3 n =
-        glm::normalize(glm::transpose(glm::dmat3(inv)) * p_object);
+    const glm::dvec3 n = glm::normalize(glm::transpose(glm::dmat3(inv)) * p_object);
 
     SurfaceHit hit;
     ASSERT_TRUE(accel.intersect(ray, hit));

@@ -107,7 +107,8 @@ TEST(InstanceScene, IdentityInstanceRendersAsTheObjectsPlacedDirectly) {
     for (int y = 0; y < direct.film.height(); ++y) {
         for (int x = 0; x < direct.film.width(); ++x) {
             const Vec3 d = direct.film.rgb(x, y) - instanced.film.rgb(x, y);
-            worst = std::max(worst, std::max(std::abs(d.x), std::max(std::abs(d.y), std::abs(d.z))));
+            worst =
+                std::max(worst, std::max(std::abs(d.x), std::max(std::abs(d.y), std::abs(d.z))));
         }
     }
     EXPECT_LE(worst, 1e-4f);
@@ -143,7 +144,8 @@ TEST(InstanceScene, ErrorsNameTheirPointer) {
          "s.json#/objects/0/transform/matrix/0/0", "magnitude <= 1e18"},
         {with_instance(R"({"type": "instance", "of": "g", "transform": {"scale": 1e-20}})"),
          "s.json#/objects/0/transform", "expected an invertible transform"},
-        {with_instance(R"({"type": "instance", "of": "g", "transform": {"scale": [1e-19, 1e10, 1e9]}})"),
+        {with_instance(
+             R"({"type": "instance", "of": "g", "transform": {"scale": [1e-19, 1e10, 1e9]}})"),
          "s.json#/objects/0/transform", "inverse fit in floats"},
         {with_instance(R"({"type": "instance", "of": "g", "transform":
              {"matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]]}})"),
@@ -156,8 +158,8 @@ TEST(InstanceScene, ErrorsNameTheirPointer) {
          "s.json#/objects/0/transform/scale", "unknown"},
         {with_instance(R"({"type": "instance", "of": "g", "material": "none"})"),
          "s.json#/objects/0/material", "unknown material"},
-        {head + R"("groups": {"g": [{"type": "instance", "of": "g"}]}})",
-         "s.json#/groups/g/0/type", "may not contain instances (of itself"},
+        {head + R"("groups": {"g": [{"type": "instance", "of": "g"}]}})", "s.json#/groups/g/0/type",
+         "may not contain instances (of itself"},
         {head + R"("groups": {"g": []}})", "s.json#/groups/g", "non-empty array"},
         {head + R"("groups": [1]})", "s.json#/groups", "expected an object of named groups"},
         {head + R"("groups": {"g": [{"type": "sphere", "center": [0, 0, 0], "radius": -1}]}})",
