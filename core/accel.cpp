@@ -5,6 +5,7 @@
 
 #include "core/embree_device.h"
 #include "core/shapes/height_field_geometry.h"
+#include "core/instance_binding.h"
 #include "core/shapes/mesh_geometry.h"
 #include "core/shapes/sphere_geometry.h"
 #include "core/user_geometry.h"
@@ -40,45 +41,101 @@ RTCRayHit make_rtc_rayhit(const Ray& ray) {
 
 }  // namespace
 
+namespace {
+
+RTCScene new_rtc_scene(const AccelOptions& options) {
+    RTCScene scene = rtcNewScene(embree_device());
+    rtcSetSceneFlags(scene, options.robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
+    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+    return scene;
+}
+
+// Commits the binding's geometry, attaches it to `scene` and keeps the binding at its geometry
+// id; returns its primitive count.
+size_t attach(RTCScene scene, std::vector<std::unique_ptr<GeometryBinding>>& bindings,
+              std::unique_ptr<GeometryBinding> binding) {
+    RTCGeometry geometry = binding->geometry();
+    rtcCommitGeometry(geometry);
+    const unsigned id = rtcAttachGeometry(scene, geometry);
+    rtcReleaseGeometry(geometry);
+    fail_on_embree_error("geometry set-up");
+    const size_t primitives = binding->primitive_count();
+    if (id >= bindings.size()) bindings.resize(id + 1);
+    bindings[id] = std::move(binding);
+    return primitives;
+}
+
+// Every registered shape type in registry order (make_binding picks its representation), then
+// the meshes: of the scene itself or of a group (core/instance.h).
+template <typename Objects>
+size_t attach_objects(RTCScene scene, std::vector<std::unique_ptr<GeometryBinding>>& bindings,
+                      const Objects& objects, const AccelOptions& options) {
+    size_t primitives = 0;
+    objects.shapes.for_each([&](const auto& shapes) {
+        using S = ShapeOf<decltype(shapes)>;
+        if (!shapes.empty()) {
+            primitives +=
+                attach(scene, bindings, make_binding(shapes, Shapes::index_of<S>(), options));
+        }
+    });
+    for (size_t m = 0; m < objects.meshes.size(); ++m) {
+        if (objects.meshes[m].triangles.empty()) continue;
+        primitives +=
+            attach(scene, bindings,
+                   make_mesh_binding(objects.meshes[m], static_cast<uint32_t>(m), kTriangleShape));
+    }
+    return primitives;
+}
+
+}  // namespace
+
 Accel::Accel(const Scene& scene, const AccelOptions& options) : m_options(options) {
     if (options.spheres.method == SphereMethod::Auto) {
         throw std::logic_error("Accel: the auto sphere method must be resolved by the caller");
     }
     const long long bytes_before = embree_bytes_in_use();
-    m_rtc_scene = rtcNewScene(embree_device());
-    rtcSetSceneFlags(m_rtc_scene, options.robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
-    rtcSetSceneBuildQuality(m_rtc_scene, RTC_BUILD_QUALITY_HIGH);
-    // Every registered shape type, in registry order; make_binding picks its representation.
-    scene.shapes.for_each([&](const auto& shapes) {
-        using S = ShapeOf<decltype(shapes)>;
-        if (!shapes.empty()) attach(make_binding(shapes, Shapes::index_of<S>(), options));
-    });
-    for (size_t m = 0; m < scene.meshes.size(); ++m) {
-        if (scene.meshes[m].triangles.empty()) continue;
-        attach(make_mesh_binding(scene.meshes[m], static_cast<uint32_t>(m), kTriangleShape));
-    }
+    m_rtc_scene = new_rtc_scene(options);
+    m_primitive_count = attach_objects(m_rtc_scene, m_bindings, scene, options);
+    // Height fields traced by grid traversal (docs/heightfields.md): one primitive each here,
+    // whatever their cell count.
     for (size_t f = 0; f < scene.heightfields.size(); ++f) {
-        attach(make_height_field_binding(scene.heightfields[f], static_cast<uint32_t>(f),
-                                         kHeightFieldShape));
+        m_primitive_count += attach(m_rtc_scene, m_bindings,
+                                    make_height_field_binding(scene.heightfields[f],
+                                                              static_cast<uint32_t>(f),
+                                                              kHeightFieldShape));
     }
+    m_stored_primitive_count = m_primitive_count;
+    // Instancing: each instanced group's scene is built once; each instance is one Embree
+    // instance geometry of the top scene pointing at it.
+    m_groups.resize(scene.groups.size());
+    for (const Instance& instance : scene.instances) {
+        GroupScene& group = m_groups.at(instance.group);
+        if (group.scene) continue;
+        group.scene = new_rtc_scene(options);
+        group.primitive_count =
+            attach_objects(group.scene, group.bindings, scene.groups[instance.group], options);
+        rtcCommitScene(group.scene);
+        fail_on_embree_error("group scene commit");
+        m_stored_primitive_count += group.primitive_count;
+    }
+    for (size_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& instance = scene.instances[i];
+        m_primitive_count +=
+            attach(m_rtc_scene, m_bindings,
+                   std::make_unique<InstanceBinding>(m_groups[instance.group], instance,
+                                                     static_cast<uint32_t>(i)));
+    }
+    m_instance_count = scene.instances.size();
     rtcCommitScene(m_rtc_scene);
     fail_on_embree_error("scene commit");
     m_embree_bytes = static_cast<size_t>(std::max(0LL, embree_bytes_in_use() - bytes_before));
 }
 
-void Accel::attach(std::unique_ptr<GeometryBinding> binding) {
-    RTCGeometry geometry = binding->geometry();
-    rtcCommitGeometry(geometry);
-    const unsigned id = rtcAttachGeometry(m_rtc_scene, geometry);
-    rtcReleaseGeometry(geometry);
-    fail_on_embree_error("geometry set-up");
-    m_primitive_count += binding->primitive_count();
-    if (id >= m_bindings.size()) m_bindings.resize(id + 1);
-    m_bindings[id] = std::move(binding);
-}
-
 Accel::~Accel() {
     if (m_rtc_scene) rtcReleaseScene(m_rtc_scene);
+    for (GroupScene& group : m_groups) {
+        if (group.scene) rtcReleaseScene(group.scene);
+    }
 }
 
 bool Accel::intersect(const Ray& ray, SurfaceHit& hit) const {
@@ -119,8 +176,13 @@ void Accel::occluded_coherent(const Ray* rays, int count, bool* occluded) const 
 
 bool Accel::finish_hit(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& hit) const {
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-    m_bindings[rayhit.hit.geomID]->surface(ray, rayhit, hit);
-    hit.geometry = rayhit.hit.geomID;
+    // Through an instance, geomID names the geometry within the group and instID[0] the
+    // instance: its binding carries the group's hit to world space (core/instance_binding.h).
+    const unsigned instance = rayhit.hit.instID[0];
+    const unsigned geometry = instance != RTC_INVALID_GEOMETRY_ID ? instance : rayhit.hit.geomID;
+    hit.instance = kNoInstance;
+    m_bindings[geometry]->surface(ray, rayhit, hit);
+    hit.geometry = geometry;
     return true;
 }
 

@@ -10,6 +10,7 @@
 
 #include "core/accel_options.h"
 #include "core/geometry_binding.h"
+#include "core/instance_binding.h"
 #include "core/ray.h"
 #include "core/scene.h"
 #include "core/surface_hit.h"
@@ -42,16 +43,22 @@ class Accel {
     // device's memory monitor; exact when scenes are built one at a time.
     size_t embree_bytes() const { return m_embree_bytes; }
     RTCScene rtc_scene() const { return m_rtc_scene; }  // for raw-Embree baselines
+    // Primitives in the scene, each instance counting its group's (the instanced total), and
+    // primitives stored (each instanced group once); the count of instances.
     size_t primitive_count() const { return m_primitive_count; }
+    size_t stored_primitive_count() const { return m_stored_primitive_count; }
+    size_t instance_count() const { return m_instance_count; }
 
   private:
-    void attach(std::unique_ptr<GeometryBinding> binding);
     bool finish_hit(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& hit) const;
 
     AccelOptions m_options;
     RTCScene m_rtc_scene = nullptr;
     std::vector<std::unique_ptr<GeometryBinding>> m_bindings;  // indexed by Embree geomID
+    std::vector<GroupScene> m_groups;  // per Scene::groups entry; built when instanced
     size_t m_primitive_count = 0;
+    size_t m_stored_primitive_count = 0;
+    size_t m_instance_count = 0;
     size_t m_embree_bytes = 0;
 };
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/camera.h"
+#include "core/instance.h"
 #include "core/scene_limits.h"
 #include "core/shapes/height_field.h"
 #include "core/shapes/mesh.h"
@@ -26,7 +27,16 @@ struct Scene {
     Shapes shapes;
     std::vector<TriangleMesh> meshes;
     std::vector<HeightField> heightfields;  // traced by grid traversal (docs/heightfields.md)
+    // Named groups of objects and their placements (core/instance.h); empty for most scenes.
+    std::vector<ShapeGroup> groups;
+    std::vector<Instance> instances;
 
+    // Analytic shapes and triangles placed through instances (each instance counts its group).
+    size_t instanced_object_count() const {
+        size_t n = 0;
+        for (const Instance& i : instances) n += groups[i.group].object_count();
+        return n;
+    }
     size_t triangle_count() const {
         size_t n = 0;
         for (const auto& m : meshes) n += m.triangle_count();

@@ -8,6 +8,8 @@
 
 namespace rayo {
 
+constexpr uint32_t kNoInstance = 0xFFFFFFFFu;
+
 struct SurfaceHit {
     float t = 0.0f;
     Vec3 position{0.0f};          // on the surface (sphere hits re-projected onto the sphere)
@@ -18,7 +20,12 @@ struct SurfaceHit {
     uint32_t shape = 0;      // the shape type: its index in AnalyticShapes, or kTriangleShape
     uint32_t primitive = 0;  // index of the shape within its type, or of the triangle in its mesh
     uint32_t mesh = 0;       // the mesh's index, for triangles
-    uint32_t geometry = 0;   // the accel's Embree geometry id
+    uint32_t geometry = 0;   // the accel's Embree geometry id (an instance's, for instanced hits)
+    // For hits through an instance (core/instance.h): the instance's index in Scene::instances
+    // and the geometry id within its group's Embree scene; shape, primitive and mesh then refer
+    // to the group's objects. kNoInstance for everything placed directly.
+    uint32_t instance = kNoInstance;
+    uint32_t group_geometry = 0;
     // Surface parameterization, filled on request only (Accel::parameterize): no shader needs it
     // per hit yet, and the sphere's costs an atan2 and an acos.
     glm::vec2 uv{0.0f};

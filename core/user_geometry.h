@@ -5,6 +5,7 @@
 // lane data goes through the RTCRayN_/RTCHitN_ accessors (Embree 3 user-geometry API).
 #include <embree3/rtcore.h>
 
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -37,6 +38,17 @@ inline void read_ray_lane(RayN* ray, unsigned n, unsigned i, Vec3& origin, Vec3&
     direction = Vec3(RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i), RTCRayN_dir_z(ray, n, i));
 }
 
+// Inside an instance Embree hands the callbacks the ray in the group's object space
+// (core/instance.h), where a scaled instance makes the direction non-unit; shapes take unit
+// directions (core/shapes/shape.h). Returns the direction's length when it must be renormalised
+// (t then scales by it), 1 otherwise: outside instances, and where the mapping kept the length
+// to float rounding (identity, rotations), so that those rays take the shapes' path unchanged.
+inline float instanced_direction_length(const RTCIntersectContext* context, const Vec3& d) {
+    if (context->instID[0] == RTC_INVALID_GEOMETRY_ID) return 1.0f;
+    const float length_squared = glm::dot(d, d);
+    return std::abs(length_squared - 1.0f) <= 1e-6f ? 1.0f : std::sqrt(length_squared);
+}
+
 template <typename S>
 void user_bounds(const RTCBoundsFunctionArguments* args) {
     const auto* data = static_cast<const UserGeometryData<S>*>(args->geometryUserPtr);
@@ -61,10 +73,18 @@ void user_intersect(const RTCIntersectFunctionNArguments* args) {
         if (args->valid[i] == 0) continue;
         Vec3 origin, direction;
         read_ray_lane(ray, n, i, origin, direction);
+        float tnear = RTCRayN_tnear(ray, n, i), tfar = RTCRayN_tfar(ray, n, i);
+        const float length = instanced_direction_length(args->context, direction);
+        if (length != 1.0f) {
+            direction /= length;
+            tnear *= length;
+            tfar *= length;
+        }
         ShapeHit h;
-        if (!Call::run(shape, origin, direction, RTCRayN_tnear(ray, n, i), RTCRayN_tfar(ray, n, i),
-                       h)) {
-            continue;
+        if (!Call::run(shape, origin, direction, tnear, tfar, h)) continue;
+        if (length != 1.0f) {
+            h.t /= length;
+            if (!(h.t < RTCRayN_tfar(ray, n, i))) continue;  // rounding of the rescale
         }
         RTCRayN_tfar(ray, n, i) = h.t;
         RTCHitN_Ng_x(hit, n, i) = h.normal.x;
@@ -87,9 +107,15 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
         if (args->valid[i] == 0) continue;
         Vec3 origin, direction;
         read_ray_lane(args->ray, n, i, origin, direction);
+        float tnear = RTCRayN_tnear(args->ray, n, i), tfar = RTCRayN_tfar(args->ray, n, i);
+        const float length = instanced_direction_length(args->context, direction);
+        if (length != 1.0f) {
+            direction /= length;
+            tnear *= length;
+            tfar *= length;
+        }
         ShapeHit h;
-        if (Call::run(shape, origin, direction, RTCRayN_tnear(args->ray, n, i),
-                      RTCRayN_tfar(args->ray, n, i), h)) {
+        if (Call::run(shape, origin, direction, tnear, tfar, h)) {
             RTCRayN_tfar(args->ray, n, i) = -std::numeric_limits<float>::infinity();
         }
     }

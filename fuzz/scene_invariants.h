@@ -66,6 +66,30 @@ inline void check_scene(const SceneDescription& d) {
                "heightfield bounds");
         expect(f.material < materials, "heightfield material id out of range");
     }
+    // Groups and instances (core/instance.h): the groups' objects as the scene's, every
+    // instance naming a group, with a finite invertible transform and a valid material.
+    for (const ShapeGroup& g : d.scene.groups) {
+        expect(g.object_count() > 0, "group '" + g.name + "' is empty");
+        for (const Sphere& s : g.shapes.of<Sphere>()) {
+            expect(finite(s.center) && finite(s.radius) && s.radius > 0.0f, "group sphere");
+            expect(s.material < materials, "group sphere material id out of range");
+        }
+        for (size_t i = 0; i < g.meshes.size(); ++i) {
+            check_mesh(g.meshes[i], materials, "group '" + g.name + "' mesh " + std::to_string(i));
+        }
+    }
+    for (const Instance& instance : d.scene.instances) {
+        expect(instance.group < d.scene.groups.size(), "instance of a group that does not exist");
+        expect(instance.material == kNoMaterialOverride || instance.material < materials,
+               "instance material id out of range");
+        const glm::mat4 inverse = glm::inverse(instance.transform);
+        for (int c = 0; c < 4; ++c) {
+            for (int r = 0; r < 4; ++r) {
+                expect(std::isfinite(instance.transform[c][r]) && std::isfinite(inverse[c][r]),
+                       "instance transform or its inverse is not finite");
+            }
+        }
+    }
     for (const Material& m : d.shading.materials) {
         expect(finite(m.ka) && finite(m.kd) && finite(m.ks) && finite(m.reflect) &&
                    finite(m.transmit) && finite(m.shininess) && finite(m.ior) && m.ior > 0.0f,

@@ -203,7 +203,9 @@ bool RadiosityField::shape_reflected(const SurfaceHit& hit, Vec3& radiance) cons
 }
 
 bool RadiosityField::reflected(const SurfaceHit& hit, Vec3& radiance) const {
-    if (m_patch_radiance.empty()) return false;
+    // Instanced objects (hit.instance) are not patches: radiosity solves the scene's own
+    // shapes and meshes only.
+    if (m_patch_radiance.empty() || hit.instance != kNoInstance) return false;
     if (hit.shape != kTriangleShape) return shape_reflected(hit, radiance);
     if (hit.mesh >= m_cuts.size()) return false;
     const TriangleMesh& mesh = m_scene.meshes[hit.mesh];

@@ -377,8 +377,13 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << (r.coherent ? "coherent Embree streams per tile (camera, shadow)" : "single rays")
         << "\n"
         << "  primitives                  " << r.primitives << " (" << shape_summary(d.scene)
-        << ")\n"
-        << "  materials, lights           " << d.shading.materials.size() << ", "
+        << ")\n";
+    if (r.instances > 0) {
+        out << "  instances                   " << r.instances << " of " << d.scene.groups.size()
+            << " group(s): " << r.stored_primitives << " primitives stored, "
+            << d.scene.instanced_object_count() << " objects placed through instances\n";
+    }
+    out << "  materials, lights           " << d.shading.materials.size() << ", "
         << d.shading.lights.size() << "\n"
         << "  max depth                   " << d.settings.whitted.max_depth << "\n"
         << "  time parse                  " << format_duration(parse_s) << "\n"
@@ -718,6 +723,12 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
         << "materials " << d.shading.materials.size() << "\n"
         << "lights " << d.shading.lights.size() << "\n"
         << "skipped_triangles " << d.skipped_triangles << "\n";
+    if (!d.scene.groups.empty()) {
+        // Groups' objects are stored once; instanced_objects counts them once per instance.
+        out << "groups " << d.scene.groups.size() << "\n"
+            << "instances " << d.scene.instances.size() << "\n"
+            << "instanced_objects " << d.scene.instanced_object_count() << "\n";
+    }
     for (const std::string& w : d.warnings) out << "warning: " << w << "\n";
     return 0;
 }

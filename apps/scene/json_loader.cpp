@@ -14,6 +14,7 @@
 #include "apps/scene/height_image.h"
 #include "apps/scene/input_file.h"
 #include "apps/scene/mesh_loader.h"
+#include "apps/scene/sphereflake.h"
 #include "core/error.h"
 #include "core/path_util.h"
 #include "core/scene_limits.h"
@@ -605,12 +606,25 @@ class SceneParser {
     Fog parse_fog(const Json& value, const std::string& pointer) const;
     void parse_radiosity(const Json& value, const std::string& pointer, RadiositySettings& r) const;
     Attenuation parse_attenuation(const Json& value, const std::string& pointer) const;
+    // Where objects go: the scene itself, or a group (core/instance.h), whose objects may not be
+    // instances (kMaxInstanceLevels).
+    struct ObjectSink {
+        Shapes& shapes;
+        std::vector<TriangleMesh>& meshes;
+        TriangleMesh& polygons;  // every "triangle" and "polygon" object, one Embree geometry
+        bool in_group;
+    };
     void parse_object(const Json& value, const std::string& pointer, SceneDescription& out,
-                      TriangleMesh& polygons);
-    void parse_mesh(const Json& value, const std::string& pointer, SceneDescription& out);
+                      const ObjectSink& sink);
+    void parse_mesh(const Json& value, const std::string& pointer, SceneDescription& out,
+                    std::vector<TriangleMesh>& meshes);
+    void parse_groups(const Json& value, const std::string& pointer, SceneDescription& out);
+    Instance parse_instance(const Json& value, const std::string& pointer) const;
+    // `matrix` allows an explicit affine matrix besides scale/rotate/translate (instances).
+    glm::dmat4 parse_transform(const Json& value, const std::string& pointer,
+                               bool matrix = false) const;
     void parse_heightfield(const Json& value, const std::string& pointer,
                            SceneDescription& out) const;
-    glm::dmat4 parse_transform(const Json& value, const std::string& pointer) const;
     uint32_t material_of(const Json& object, const std::string& pointer) const;
 
     std::string m_source;
@@ -618,6 +632,7 @@ class SceneParser {
     FileAccess m_access;
     std::map<std::string, uint32_t> m_material_ids;
     std::map<std::string, int32_t> m_texture_ids;  // name -> index in ShadingScene::textures
+    std::map<std::string, uint32_t> m_group_ids;   // name -> index in Scene::groups
 };
 
 SceneDescription SceneParser::parse(const Json& root) {
@@ -629,7 +644,7 @@ SceneDescription SceneParser::parse(const Json& root) {
     }
     check_keys(root, "",
                {"rayo", "camera", "render", "background", "ambient_light", "fog", "textures",
-                "materials", "lights", "objects", "radiosity"});
+                "materials", "lights", "groups", "objects", "radiosity"});
 
     SceneDescription out;
     out.source = m_source;
@@ -669,13 +684,16 @@ SceneDescription SceneParser::parse(const Json& root) {
         }
     }
 
-    TriangleMesh polygons;  // every "triangle" and "polygon" object, one Embree geometry
+    // Groups before objects: instances name them.
+    if (const Json* groups = find(root, "groups")) parse_groups(*groups, "/groups", out);
+    TriangleMesh polygons;
     polygons.name = "polygons";
     if (const Json* objects = find(root, "objects")) {
         if (!objects->is_array())
             fail("/objects", "expected an array of objects, got " + describe(*objects));
+        const ObjectSink sink{out.scene.shapes, out.scene.meshes, polygons, false};
         for (size_t i = 0; i < objects->size(); ++i) {
-            parse_object((*objects)[i], child("/objects", i), out, polygons);
+            parse_object((*objects)[i], child("/objects", i), out, sink);
         }
     }
     if (!polygons.triangles.empty()) out.scene.meshes.push_back(std::move(polygons));
@@ -1162,13 +1180,77 @@ uint32_t SceneParser::material_of(const Json& object, const std::string& pointer
     return it->second;
 }
 
+void SceneParser::parse_groups(const Json& value, const std::string& pointer,
+                               SceneDescription& out) {
+    require_object(value, pointer, "an object of named groups {\"name\": [objects]}");
+    for (const auto& item : value.items()) {
+        const std::string where = child(pointer, item.key());
+        if (item.key().empty()) fail(where, "expected a non-empty group name");
+        const Json& objects = item.value();
+        if (!objects.is_array() || objects.empty()) {
+            fail(where, "expected a non-empty array of objects, got " + describe(objects));
+        }
+        ShapeGroup group;
+        group.name = item.key();
+        TriangleMesh polygons;
+        polygons.name = "polygons";
+        const ObjectSink sink{group.shapes, group.meshes, polygons, true};
+        for (size_t i = 0; i < objects.size(); ++i) {
+            parse_object(objects[i], child(where, i), out, sink);
+        }
+        if (!polygons.triangles.empty()) group.meshes.push_back(std::move(polygons));
+        m_group_ids[group.name] = static_cast<uint32_t>(out.scene.groups.size());
+        out.scene.groups.push_back(std::move(group));
+    }
+}
+
+Instance SceneParser::parse_instance(const Json& value, const std::string& pointer) const {
+    check_keys(value, pointer, {"type", "of", "transform", "material"});
+    const std::string of_pointer = child(pointer, "of");
+    const Json& of = require(value, pointer, "of", "the name of a group");
+    if (!of.is_string()) fail(of_pointer, "expected the name of a group, got " + describe(of));
+    const auto it = m_group_ids.find(of.get<std::string>());
+    if (it == m_group_ids.end()) {
+        std::vector<std::string> known;
+        for (const auto& entry : m_group_ids) known.push_back(entry.first);
+        fail(of_pointer, "unknown group \"" + of.get<std::string>() + "\" (defined in /groups: " +
+                             (known.empty() ? std::string("none") : join(known)) + ")");
+    }
+    Instance instance;
+    instance.group = it->second;
+    if (const Json* t = find(value, "transform")) {
+        const std::string where = child(pointer, "transform");
+        const glm::dmat4 m = parse_transform(*t, where, true);
+        // The accel needs M and M⁻¹ in float: both finite, within the scene magnitude, and
+        // det M ≠ 0 in float.
+        const glm::mat4 f(m);
+        if (glm::determinant(glm::mat3(f)) == 0.0f) {
+            fail(where, "expected an invertible transform, got a singular one (determinant 0)");
+        }
+        const glm::mat4 inverse = glm::inverse(f);
+        for (int c = 0; c < 4; ++c) {
+            for (int r = 0; r < 4; ++r) {
+                if (!within_scene_magnitude(m[c][r]) || !within_scene_magnitude(inverse[c][r])) {
+                    fail(where, std::string("expected an invertible transform whose matrix and "
+                                            "inverse fit in floats: every entry must be ") +
+                                    kSceneMagnitudeRule);
+                }
+            }
+        }
+        instance.transform = f;
+    }
+    if (find(value, "material")) instance.material = material_of(value, pointer);
+    return instance;
+}
+
 void SceneParser::parse_object(const Json& value, const std::string& pointer, SceneDescription& out,
-                               TriangleMesh& polygons) {
+                               const ObjectSink& sink) {
     require_object(value, pointer, "an object");
     // The registered shapes by name (core/shapes/registry.h), then the triangle-mesh kinds.
     static const std::vector<std::string> types = [] {
         std::vector<std::string> names = Shapes::names();
-        for (const char* kind : {"triangle", "polygon", "mesh", "heightfield"}) {
+        for (const char* kind :
+             {"triangle", "polygon", "mesh", "heightfield", "sphereflake", "instance"}) {
             names.push_back(kind);
         }
         return names;
@@ -1181,7 +1263,7 @@ void SceneParser::parse_object(const Json& value, const std::string& pointer, Sc
     const std::string type =
         choice(require(value, pointer, "type", expected_type), child(pointer, "type"), types);
     bool shape_read = false;
-    out.scene.shapes.for_each([&](auto& shapes) {
+    sink.shapes.for_each([&](auto& shapes) {
         if (type == ShapeOf<decltype(shapes)>::kName) {
             parse_shape(value, pointer, shapes);
             shape_read = true;
@@ -1213,13 +1295,39 @@ void SceneParser::parse_object(const Json& value, const std::string& pointer, Sc
                 normals.push_back(direction((*n)[i], child(normals_pointer, i)));
             }
         }
-        if (!polygons.add_polygon(points, normals, material_of(value, pointer))) {
+        if (!sink.polygons.add_polygon(points, normals, material_of(value, pointer))) {
             fail(vertices_pointer, "expected a " + type + " with non-zero area");
         }
     } else if (type == "heightfield") {
+        if (sink.in_group) {
+            fail(child(pointer, "type"),
+                 "a group may not contain height fields (they are placed directly only)");
+        }
         parse_heightfield(value, pointer, out);
+    } else if (type == "sphereflake") {
+        // Spheres generated as the SPD "balls" scene places them (apps/scene/sphereflake.h):
+        // a scene of many spheres without a file of them.
+        check_keys(value, pointer, {"type", "center", "radius", "depth", "axis", "material"});
+        const Vec3 center =
+            vec3(require(value, pointer, "center", "[x, y, z]"), child(pointer, "center"));
+        const float radius = real(require(value, pointer, "radius", "a positive number"),
+                                  child(pointer, "radius"), Bound::Positive);
+        const int depth = integer(require(value, pointer, "depth", "an integer"),
+                                  child(pointer, "depth"), 0, kMaxSphereflakeDepth);
+        Vec3 axis(0, 0, 1);
+        if (const Json* v = find(value, "axis")) axis = direction(*v, child(pointer, "axis"));
+        add_sphereflake(sink.shapes.of<Sphere>(), center, radius, axis, depth,
+                        material_of(value, pointer));
+    } else if (type == "instance") {
+        if (sink.in_group) {
+            fail(child(pointer, "type"),
+                 "a group may not contain instances (of itself or of another group): instances "
+                 "are one level deep, as this Embree build traces (RTC_MAX_INSTANCE_LEVEL_COUNT " +
+                     std::to_string(kMaxInstanceLevels) + ")");
+        }
+        out.scene.instances.push_back(parse_instance(value, pointer));
     } else {
-        parse_mesh(value, pointer, out);
+        parse_mesh(value, pointer, out, sink.meshes);
     }
 }
 
@@ -1319,9 +1427,40 @@ void SceneParser::parse_heightfield(const Json& value, const std::string& pointe
     }
 }
 
-glm::dmat4 SceneParser::parse_transform(const Json& value, const std::string& pointer) const {
+glm::dmat4 SceneParser::parse_transform(const Json& value, const std::string& pointer,
+                                        bool matrix) const {
     require_object(value, pointer, "a transform object");
-    check_keys(value, pointer, {"scale", "rotate", "translate"});
+    if (!matrix) {
+        check_keys(value, pointer, {"scale", "rotate", "translate"});
+    } else if (const Json* v = find(value, "matrix")) {
+        check_keys(value, pointer, {"matrix"});  // not mixed with scale/rotate/translate
+        // Rows of the affine matrix: 3 rows [a b c d] (the fourth is implied), or 4 rows whose
+        // last is [0, 0, 0, 1].
+        const std::string where = child(pointer, "matrix");
+        const std::string expected = "3 or 4 rows of 4 numbers (an affine matrix, row by row)";
+        if (!v->is_array() || v->size() < 3 || v->size() > 4) {
+            fail(where, "expected " + expected + ", got " + describe(*v));
+        }
+        glm::dmat4 m(1.0);
+        for (size_t r = 0; r < v->size(); ++r) {
+            const Json& row = (*v)[r];
+            const std::string row_pointer = child(where, r);
+            if (!row.is_array() || row.size() != 4) {
+                fail(row_pointer, "expected a row of 4 numbers, got " + describe(row));
+            }
+            for (size_t c = 0; c < 4; ++c) {
+                const double x = real(row[c], child(row_pointer, c));
+                if (r == 3 && x != (c == 3 ? 1.0 : 0.0)) {
+                    fail(row_pointer,
+                         "expected [0, 0, 0, 1] (an affine matrix), got " + describe(row));
+                }
+                m[static_cast<int>(c)][static_cast<int>(r)] = x;  // glm: m[column][row]
+            }
+        }
+        return m;
+    } else {
+        check_keys(value, pointer, {"matrix", "scale", "rotate", "translate"});
+    }
     glm::dvec3 scale(1.0), rotate(0.0), translate(0.0);
     if (const Json* v = find(value, "scale")) {
         const std::string where = child(pointer, "scale");
@@ -1340,7 +1479,8 @@ glm::dmat4 SceneParser::parse_transform(const Json& value, const std::string& po
     return glm::scale(m, scale);
 }
 
-void SceneParser::parse_mesh(const Json& value, const std::string& pointer, SceneDescription& out) {
+void SceneParser::parse_mesh(const Json& value, const std::string& pointer, SceneDescription& out,
+                             std::vector<TriangleMesh>& meshes) {
     check_keys(value, pointer, {"type", "file", "material", "transform", "smooth"});
     const std::string file_pointer = child(pointer, "file");
     const Json& file = require(value, pointer, "file", "a path to an .obj, .gltf or .glb file");
@@ -1402,7 +1542,7 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
                                " degenerate (zero-area) triangle(s) of '" + path + "'");
         out.skipped_triangles += stats.degenerate_triangles;
     }
-    out.scene.meshes.push_back(std::move(mesh));
+    meshes.push_back(std::move(mesh));
 }
 
 }  // namespace

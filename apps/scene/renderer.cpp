@@ -32,21 +32,38 @@ void check_material_ids(const SceneDescription& d) {
                                            " but only " + std::to_string(count) + " are defined");
         }
     };
-    d.scene.shapes.for_each([&](const auto& shapes) {
-        using S = ShapeOf<decltype(shapes)>;
-        for (size_t i = 0; i < shapes.size(); ++i) {
-            check(shapes[i].material, std::string(S::kName) + " " + std::to_string(i));
+    // The scene's objects and every group's ("group NAME: sphere 3").
+    auto check_objects = [&](const auto& objects, const std::string& prefix) {
+        objects.shapes.for_each([&](const auto& shapes) {
+            using S = ShapeOf<decltype(shapes)>;
+            for (size_t i = 0; i < shapes.size(); ++i) {
+                check(shapes[i].material, prefix + S::kName + " " + std::to_string(i));
+            }
+        });
+        for (size_t m = 0; m < objects.meshes.size(); ++m) {
+            const TriangleMesh& mesh = objects.meshes[m];
+            if (mesh.materials.size() != mesh.triangles.size()) {
+                throw InputError(d.source,
+                                 prefix + "mesh " + std::to_string(m) + " has " +
+                                     std::to_string(mesh.triangles.size()) + " triangles but " +
+                                     std::to_string(mesh.materials.size()) + " material ids");
+            }
+            for (uint32_t id : mesh.materials) check(id, prefix + "mesh " + std::to_string(m));
         }
-    });
-    for (size_t m = 0; m < d.scene.meshes.size(); ++m) {
-        const TriangleMesh& mesh = d.scene.meshes[m];
-        if (mesh.materials.size() != mesh.triangles.size()) {
-            throw InputError(d.source, "mesh " + std::to_string(m) + " has " +
-                                           std::to_string(mesh.triangles.size()) +
-                                           " triangles but " +
-                                           std::to_string(mesh.materials.size()) + " material ids");
+    };
+    check_objects(d.scene, "");
+    for (const ShapeGroup& group : d.scene.groups)
+        check_objects(group, "group " + group.name + ": ");
+    for (size_t i = 0; i < d.scene.instances.size(); ++i) {
+        const Instance& instance = d.scene.instances[i];
+        if (instance.group >= d.scene.groups.size()) {
+            throw InputError(d.source, "instance " + std::to_string(i) + " names group " +
+                                           std::to_string(instance.group) + " but only " +
+                                           std::to_string(d.scene.groups.size()) + " exist");
         }
-        for (uint32_t id : mesh.materials) check(id, "mesh " + std::to_string(m));
+        if (instance.material != kNoMaterialOverride) {
+            check(instance.material, "instance " + std::to_string(i));
+        }
     }
     for (size_t f = 0; f < d.scene.heightfields.size(); ++f) {
         check(d.scene.heightfields[f].material, "heightfield " + std::to_string(f));
@@ -89,6 +106,8 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     const Accel accel(description.scene, accel_options);
     result.bvh_seconds = seconds_since(start);
     result.primitives = accel.primitive_count();
+    result.instances = accel.instance_count();
+    result.stored_primitives = accel.stored_primitive_count();
 
     // Radiosity (seed 004), the first of two passes: the patches of the meshes and of the
     // tessellated analytic shapes exchange light through the accel's occlusion rays; the second

@@ -14,7 +14,9 @@ struct RenderResult {
     RayCounters counters;
     double bvh_seconds = 0.0;
     double render_seconds = 0.0;
-    size_t primitives = 0;
+    size_t primitives = 0;         // instanced total: each instance counts its group's
+    size_t instances = 0;          // Embree instances (core/instance.h)
+    size_t stored_primitives = 0;  // each instanced group's primitives once
     int threads = 0;
     SphereChoice spheres;   // the sphere method and math that ran, and why
     bool coherent = false;  // camera/shadow rays traced as per-tile Embree streams

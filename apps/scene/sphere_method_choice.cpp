@@ -1,5 +1,6 @@
 #include "apps/scene/sphere_method_choice.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -30,7 +31,13 @@ SphereChoice choose_sphere_method(const SceneDescription& d, const Camera& camer
     std::ostringstream reason;
     if (d.scene.shapes.of<Sphere>().empty()) {
         choice.spheres.method = SphereMethod::User;
-        choice.reason = "no spheres";
+        const bool grouped =
+            std::any_of(d.scene.groups.begin(), d.scene.groups.end(),
+                        [](const ShapeGroup& g) { return !g.shapes.of<Sphere>().empty(); });
+        // Spheres in instanced groups (core/instance.h) stay analytic: their pixel size depends
+        // on every instance's transform, which this estimate does not follow.
+        choice.reason =
+            grouped ? "analytic (the spheres are in groups, placed by instances)" : "no spheres";
         return choice;
     }
     // Angular size of a pixel (radians) and the scene's largest coordinate magnitude.

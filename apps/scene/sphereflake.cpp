@@ -30,8 +30,15 @@ void add_children(std::vector<Sphere>& spheres, const Vec3& center, float radius
 
 }  // namespace
 
+void add_sphereflake(std::vector<Sphere>& spheres, const Vec3& center, float radius,
+                     const Vec3& axis, int depth, uint32_t material) {
+    spheres.push_back({center, radius, material});
+    add_children(spheres, center, radius, axis, depth, material);
+}
+
 SceneDescription make_sphereflake(int depth, int width, int height) {
-    if (depth < 0 || depth > 6) throw InputError("sphereflake", "depth must be in [0, 6]");
+    if (depth < 0 || depth > kMaxSphereflakeDepth)
+        throw InputError("sphereflake", "depth must be in [0, 6]");
     SceneDescription d;
     d.source = "<sphereflake " + std::to_string(depth) + ">";
     d.scene.camera.eye = Vec3(2.1f, 1.3f, 1.7f);
@@ -62,8 +69,7 @@ SceneDescription make_sphereflake(int depth, int width, int height) {
         {Vec3(12, 12, -0.5f), Vec3(-12, 12, -0.5f), Vec3(-12, -12, -0.5f), Vec3(12, -12, -0.5f)},
         {}, 0);
     d.scene.meshes.push_back(std::move(ground));
-    d.scene.shapes.of<Sphere>().push_back({Vec3(0.0f), 0.5f, 1});
-    add_children(d.scene.shapes.of<Sphere>(), Vec3(0.0f), 0.5f, Vec3(0, 0, 1), depth, 1);
+    add_sphereflake(d.scene.shapes.of<Sphere>(), Vec3(0.0f), 0.5f, Vec3(0, 0, 1), depth, 1);
 
     for (const Vec3& p : {Vec3(4, 3, 2), Vec3(1, -4, 4), Vec3(-3, 1, 5)}) {
         PointLight light;

@@ -56,6 +56,33 @@ TEST_F(CliTest, StatsPrintsTheFullTable) {
     EXPECT_NE(r.output.find("rays camera                 768"), std::string::npos) << r.output;
 }
 
+// A group of a sphere and a triangle placed three times beside a sphere: info and --stats count
+// the instances, the primitives stored (the sphere and the group once) and the instanced total
+// (docs/scene-format.md, "Groups and instances").
+TEST_F(CliTest, InfoAndStatsCountInstances) {
+    write("inst.json", R"({"rayo": 1, "camera": {"width": 32, "height": 24, "eye": [0, 0, 9]},
+        "groups": {"g": [{"type": "sphere", "center": [0, 0, 0], "radius": 1},
+                         {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}]},
+        "objects": [{"type": "sphere", "center": [0, 3, 0], "radius": 0.5},
+                    {"type": "instance", "of": "g"},
+                    {"type": "instance", "of": "g", "transform": {"translate": [3, 0, 0]}},
+                    {"type": "instance", "of": "g", "transform": {"translate": [-3, 0, 0]}}]})");
+    const CommandResult info = run("info inst.json");
+    EXPECT_EQ(info.exit_code, 0) << info.output;
+    for (const char* row :
+         {"spheres 1\n", "groups 1\n", "instances 3\n", "instanced_objects 6\n"}) {
+        EXPECT_NE(info.output.find(row), std::string::npos) << row << " in " << info.output;
+    }
+    const CommandResult stats = run("render inst.json --stats -o s.exr");
+    EXPECT_EQ(stats.exit_code, 0) << stats.output;
+    EXPECT_NE(stats.output.find("primitives                  7 ("), std::string::npos)
+        << stats.output;
+    EXPECT_NE(stats.output.find("instances                   3 of 1 group(s): 3 primitives "
+                                "stored, 6 objects placed through instances"),
+              std::string::npos)
+        << stats.output;
+}
+
 TEST_F(CliTest, HelpAndVersion) {
     CommandResult r = run("--help");
     EXPECT_EQ(r.exit_code, 0);
