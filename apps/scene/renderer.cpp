@@ -11,6 +11,7 @@
 #include "core/accel.h"
 #include "core/camera.h"
 #include "core/error.h"
+#include "core/film.h"
 #include "core/render.h"
 #include "shading/radiosity_field.h"
 #include "shading/whitted.h"
@@ -67,9 +68,12 @@ int default_thread_count() {
     return tbb::info::default_concurrency();
 }
 
-RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress) {
+RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress,
+                          TileSink* sink) {
     const Camera camera = Camera::create(description.scene.camera, description.source + "#/camera");
     check_material_ids(description);
+    if (sink == nullptr)
+        check_film_size(camera.width(), camera.height(), description.source + "#/camera");
     RenderResult result;
     result.threads = threads > 0 ? threads : default_thread_count();
     // Limits TBB and Embree's BVH build alike (docs/architecture.md: no task_scheduler_init in
@@ -114,7 +118,7 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
 
     const WhittedIntegrator integrator(accel, description.shading, description.settings.whitted,
                                        radiosity.get());
-    result.film = Film(camera.width(), camera.height());
+    if (sink == nullptr) result.film = Film(camera.width(), camera.height());
     TileSettings tiles;
     tiles.spp = description.settings.spp;
     tiles.tile_size = description.settings.tile_size;
@@ -131,7 +135,8 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     {
         ProgressReporter progress(static_cast<uint64_t>(camera.width()) * camera.height(),
                                   "rendering", show_progress);
-        result.counters = render_tiles(camera, integrator, tiles, result.film, &progress);
+        result.counters =
+            render_tiles(camera, integrator, tiles, sink ? *sink : result.film, &progress);
     }
     result.render_seconds = seconds_since(start);
     return result;

@@ -1,10 +1,12 @@
 #pragma once
-// One render of a scene description, end to end in memory: camera validation, the Embree BVH,
-// the Whitted integrator in the TBB tile loop. Returns the film, ray counts and phase times.
+// One render of a scene description: camera validation, the Embree BVH, the Whitted integrator
+// in the TBB tile loop, into an in-memory film or a caller's tile sink. Returns the film (when
+// it was used), ray counts and phase times.
 #include "apps/scene/scene_description.h"
 #include "apps/scene/sphere_method_choice.h"
 #include "core/film.h"
 #include "core/stats.h"
+#include "core/tile_sink.h"
 
 namespace rayo {
 
@@ -23,8 +25,11 @@ struct RenderResult {
     RadiosityStats radiosity_stats;
 };
 
-// threads = 0: all cores. Throws InputError for an invalid camera.
-RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress);
+// threads = 0: all cores. Throws InputError for an invalid camera. The tiles go to `sink` when
+// given (e.g. a file written as tiles finish, core/image/tile_stream.h; result.film stays 1×1),
+// else to result.film.
+RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress,
+                          TileSink* sink = nullptr);
 
 // The thread count TBB uses when none is given.
 int default_thread_count();
