@@ -4,7 +4,7 @@
 # set and the wall time taken from it, the write phase after the last tile from rayo's summary.
 # The 64×64 render of the same scene is the baseline the memory bound is stated against.
 # Usage: bench/highres_memory.sh OUT_DIR [SCENE] [SIZES...]
-#   (default scene /work/shared/spd/balls_1.nff, sizes 1024 2048 4096 8192 16384)
+#   (default scene bench/highres_sphere.nff, one lit sphere; sizes 1024 2048 4096 8192 16384)
 # Writes OUT_DIR/highres.csv and, with gnuplot, OUT_DIR/highres_rss.svg and highres_time.svg.
 # Images go to OUT_DIR/img and are deleted after each run (a 65536² half EXR is gigabytes).
 # Environment: FORMATS (default "exr png"), THREADS (default: all cores), EXTRA (more flags).
@@ -12,7 +12,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 rayo="${RAYO_BUILD_DIR:-$root/build}/rayo"
 out="${1:?usage: bench/highres_memory.sh OUT_DIR [SCENE] [SIZES...]}"
-scene="${2:-/work/shared/spd/balls_1.nff}"
+scene="${2:-$root/bench/highres_sphere.nff}"
 shift $(($# > 1 ? 2 : 1))
 sizes=("${@:-1024 2048 4096 8192 16384}")
 read -r -a sizes <<<"${sizes[*]}"
