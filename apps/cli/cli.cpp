@@ -369,7 +369,7 @@ std::string aa_summary(const RenderSettings& s) {
 }
 
 void print_stats_table(std::ostream& out, const SceneDescription& d, const RenderResult& r,
-                       double parse_s, double write_s) {
+                       double parse_s, double write_s, bool streamed) {
     const RayCounters& c = r.counters;
     const double mrays = r.render_seconds > 0 ? c.total_rays() / r.render_seconds / 1e6 : 0.0;
     out << "statistics\n"
@@ -393,7 +393,10 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "  time parse                  " << format_duration(parse_s) << "\n"
         << "  time BVH build              " << format_duration(r.bvh_seconds) << "\n"
         << "  time render                 " << format_duration(r.render_seconds) << "\n"
-        << "  time write                  " << format_duration(write_s) << "\n"
+        << "  time write                  "
+        << (streamed ? std::to_string(write_s) + " s after the last tile (streamed output)"
+                     : format_duration(write_s))
+        << "\n"
         << "  rays camera                 " << c.camera << "\n"
         << "  rays shadow                 " << c.shadow << "\n"
         << "  rays shadow, filtered       " << c.shadow_filtered << "\n"
@@ -483,7 +486,7 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
         for (size_t i = 0; i < history.size(); ++i) log << i + 1 << "," << history[i] << "\n";
         if (!log) throw std::runtime_error("--gi-log: cannot write '" + *args.gi_log + "'");
     }
-    if (args.stats) print_stats_table(out, d, result, parse_s, write_s);
+    if (args.stats) print_stats_table(out, d, result, parse_s, write_s, streaming);
     if (!args.quiet) {
         const RayCounters& c = result.counters;
         const double mrays =

@@ -25,6 +25,11 @@ namespace rayo {
 
 namespace {
 
+// The most bytes queued for the writer thread before workers wait (at least one item is always
+// taken). What is queued when the last tile finishes is what finish() still has to write: at
+// 16 MB, 256 EXR tiles took 0.3 s to compress after a 2 s render at 2048²; at 2 MB, 32 tiles.
+constexpr size_t kStreamQueueBytes = size_t(2) << 20;
+
 std::string size_text(long long width, long long height) {
     return std::to_string(width) + "x" + std::to_string(height);
 }

@@ -8,7 +8,8 @@
 //   (core/image/output_encoding.h: the OCIO view is per pixel) into the band of tile rows it
 //   belongs to; a band is queued to the writer thread, which writes scanlines in order, once it
 //   and every band above it are complete. Only bands not yet written are held.
-// The writer's queue is bounded (kStreamQueueBytes): workers wait when the disk falls behind.
+// The writer's queue is bounded (2 MB): workers wait when the disk or the compressor falls
+// behind, and what is left to write after the last tile stays small.
 // Files are written to a temporary name and renamed by finish(), as write_image does; a stream
 // destroyed without a successful finish() removes its temporary. The pixels are those of
 // write_image on the same film, bit for bit (tests/image/tile_stream_test.cpp).
@@ -29,8 +30,6 @@ enum class StreamMode {
 
 // Above this many pixels (1024 × 1024, a 16 MiB film) Auto streams.
 constexpr long long kStreamAbovePixels = 1LL << 20;
-// The most bytes queued for the writer thread before workers wait (at least one item).
-constexpr size_t kStreamQueueBytes = size_t(16) << 20;
 
 // Whether `path` (width × height) is streamed under `mode`. InputError(path) with the reason when
 // neither way works: a side beyond what the format stores, --range normalize with streaming of

@@ -60,8 +60,7 @@ TEST_F(StreamCli, StreamedRendersHoldTheInMemoryPixels) {
                     << r.output;
                 const Stored got = read_stored("streamed" + ext);
                 ASSERT_EQ(got.bytes.size(), expected.bytes.size()) << label;
-                EXPECT_EQ(0,
-                          std::memcmp(got.bytes.data(), expected.bytes.data(), got.bytes.size()))
+                EXPECT_EQ(0, std::memcmp(got.bytes.data(), expected.bytes.data(), got.bytes.size()))
                     << label;
                 EXPECT_EQ(got.spec.get_string_attribute("rayo:scene"),
                           expected.spec.get_string_attribute("rayo:scene"));
@@ -71,7 +70,7 @@ TEST_F(StreamCli, StreamedRendersHoldTheInMemoryPixels) {
         }
     }
     EXPECT_EQ(listing(), (std::set<std::string>{"scene.nff", "memory.exr", "memory.png",
-                                                 "streamed.exr", "streamed.png"}));
+                                                "streamed.exr", "streamed.png"}));
 }
 
 TEST_F(StreamCli, ImagesAboveAMegapixelStreamByDefault) {
@@ -94,7 +93,9 @@ TEST_F(StreamCli, ImpossibleOutputsAreRefusedBeforeTheRender) {
         {"--no-stream --width 16385 --height 16384 -o a.exr",
          "a.exr: an image of 16385x16384 (268451840 pixels) is too large for an in-memory film"},
         {"--range normalize --width 16385 --height 16384 -o a.png",
-         "which --range normalize needs; use --range clamp, or write EXR"},
+         "a.png: an image of 16385x16384 (268451840 pixels) is too large for an in-memory film "
+         "(at most 268435456 pixels, 4 GiB), which --range normalize needs; use --range clamp, "
+         "or write EXR"},
         {"--stream --range normalize -o a.png", "a.png: --range normalize needs the whole image"},
         {"--width 65501 --height 16 -o a.jpg",
          "a.jpg: cannot write 65501x16: the format stores at most 65500 pixels a side"},
@@ -105,8 +106,8 @@ TEST_F(StreamCli, ImpossibleOutputsAreRefusedBeforeTheRender) {
         for (std::string w; words >> w;) args.push_back(w);
         const WatchedResult r = run_watched(args, 30.0);
         EXPECT_EQ(r.exit_code, 1) << c.args << "\n" << r.output;
-        EXPECT_NE(r.output.find("rayo: error: " + c.message), std::string::npos)
-            << c.args << "\n" << r.output;
+        EXPECT_NE(r.output.find("rayo: error: " + c.message), std::string::npos) << c.args << "\n"
+                                                                                 << r.output;
         EXPECT_LT(r.peak_rss_kb, 400 * 1024) << c.args;  // nothing the size of the image
         EXPECT_EQ(listing(), std::set<std::string>{"scene.nff"}) << c.args;
     }
@@ -115,20 +116,21 @@ TEST_F(StreamCli, ImpossibleOutputsAreRefusedBeforeTheRender) {
 TEST_F(StreamCli, InterruptingAStreamedRenderLeavesNothing) {
     write("scene.nff", kSceneNff);
     bool sent = false;
-    const WatchedResult r = run_watched(
-        {"render", "scene.nff", "--stream", "--width", "2000", "--height", "2000", "--spp", "4",
-         "--threads", "1", "-o", "big.exr"},
-        120.0, [&](pid_t pid) {
-            // Once the temporary file exists, the stream is open and tiles are being written.
-            for (const std::string& name : listing()) {
-                if (name.rfind(".big.exr.tmp", 0) == 0) {
-                    ::kill(pid, SIGINT);
-                    sent = true;
-                    return true;
-                }
-            }
-            return false;
-        });
+    const WatchedResult r =
+        run_watched({"render", "scene.nff", "--stream", "--width", "2000", "--height", "2000",
+                     "--spp", "4", "--threads", "1", "-o", "big.exr"},
+                    120.0, [&](pid_t pid) {
+                        // Once the temporary file exists, the stream is open and tiles are being
+                        // written.
+                        for (const std::string& name : listing()) {
+                            if (name.rfind(".big.exr.tmp", 0) == 0) {
+                                ::kill(pid, SIGINT);
+                                sent = true;
+                                return true;
+                            }
+                        }
+                        return false;
+                    });
     EXPECT_TRUE(sent) << r.output;
     EXPECT_EQ(r.shell_status, 130) << r.output;
     EXPECT_EQ(listing(), std::set<std::string>{"scene.nff"});
