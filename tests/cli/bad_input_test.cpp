@@ -520,8 +520,9 @@ TEST_F(BadInputCli, FlagValuesCliTestDoesNotCover) {
     expect_refused("info scene.nff scene.nff", "info", "expected exactly one scene file",
                    "info with two scenes", 2);
     // Values that parse but that the scene or the output cannot take: exit status 1.
-    expect_refused("render scene.nff -o out.png --width 30000 --height 30000", "scene.nff#/camera",
-                   "exceeds the limit", "resolution flags over the pixel limit");
+    expect_refused("render scene.nff -o out.png --no-stream --width 30000 --height 30000",
+                   "out.png", "too large for an in-memory film",
+                   "an in-memory film over the pixel limit");
     expect_refused("render scene.nff -o out.png --display Nope", "out.png",
                    "unknown OCIO display 'Nope'", "unknown display");
     expect_refused("info nowhere.json", "nowhere.json", "cannot open", "info of a missing file");
@@ -543,7 +544,7 @@ TEST_F(BadInputCli, PreviewRefusesWhatRenderRefuses) {
         {"preview scene.nff -o folder.png", "folder.png", "cannot write: it is a directory", 1},
         {"preview scene.nff -o out.png --view Nope", "out.png", "unknown OCIO view 'Nope'", 1},
         {"preview scene.nff -o out.png --width 30000 --height 30000", "scene.nff#/camera",
-         "exceeds the limit", 1},
+         "too large for an in-memory image", 1},
         {"preview scene.nff -o out.png --width 12px", "",
          "--width: expected an integer in [1, 65536], got '12px'", 2},
         {"preview scene.nff -o out.png --threads 0", "", "--threads: expected an integer", 2},
