@@ -4,8 +4,8 @@
 #include <stdexcept>
 
 #include "core/embree_device.h"
-#include "core/shapes/height_field_geometry.h"
 #include "core/instance_binding.h"
+#include "core/shapes/height_field_geometry.h"
 #include "core/shapes/mesh_geometry.h"
 #include "core/shapes/sphere_geometry.h"
 #include "core/user_geometry.h"
@@ -99,10 +99,10 @@ Accel::Accel(const Scene& scene, const AccelOptions& options) : m_options(option
     // Height fields traced by grid traversal (docs/heightfields.md): one primitive each here,
     // whatever their cell count.
     for (size_t f = 0; f < scene.heightfields.size(); ++f) {
-        m_primitive_count += attach(m_rtc_scene, m_bindings,
-                                    make_height_field_binding(scene.heightfields[f],
-                                                              static_cast<uint32_t>(f),
-                                                              kHeightFieldShape));
+        m_primitive_count +=
+            attach(m_rtc_scene, m_bindings,
+                   make_height_field_binding(scene.heightfields[f], static_cast<uint32_t>(f),
+                                             kHeightFieldShape));
     }
     m_stored_primitive_count = m_primitive_count;
     // Instancing: each instanced group's scene is built once; each instance is one Embree

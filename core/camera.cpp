@@ -51,12 +51,10 @@ Camera Camera::create(const CameraDesc& desc, const std::string& where) {
         throw InputError(where, "resolution must be positive, got " + std::to_string(desc.width) +
                                     "x" + std::to_string(desc.height));
     }
-    if (desc.width > kMaxImageSide || desc.height > kMaxImageSide ||
-        static_cast<long long>(desc.width) * desc.height > kMaxImagePixels) {
+    if (desc.width > kMaxImageSide || desc.height > kMaxImageSide) {
         throw InputError(where, "resolution " + std::to_string(desc.width) + "x" +
                                     std::to_string(desc.height) + " exceeds the limit of " +
-                                    std::to_string(kMaxImageSide) + " pixels a side and " +
-                                    std::to_string(kMaxImagePixels) + " pixels in all");
+                                    std::to_string(kMaxImageSide) + " pixels a side");
     }
     if (!(desc.distance > 0.0f)) {
         throw InputError(where, "distance must be > 0, got " + std::to_string(desc.distance));

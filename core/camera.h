@@ -48,9 +48,11 @@ struct CameraDesc {
     std::optional<float> focus_distance;
 };
 
-// Largest accepted image: 32768 pixels a side and 2^28 pixels in all (a 4 GiB float RGBA film).
-constexpr int kMaxImageSide = 32768;
-constexpr long long kMaxImagePixels = 1LL << 28;
+// Largest accepted image: 65536 pixels a side (docs/limits.md, "Resolution"): film positions are
+// floats, which at x = 65536 (2^16) still place samples on a 1/256-pixel lattice, and tile and
+// pixel indices stay far inside int and size_t. Images above kMaxFilmPixels (core/film.h) are
+// rendered only by streaming to a file (core/image/tile_stream.h).
+constexpr int kMaxImageSide = 65536;
 
 class Camera {
   public:

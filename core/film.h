@@ -4,12 +4,31 @@
 // threads into disjoint pixels; nothing here locks.
 #include <algorithm>
 #include <cstddef>
+#include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "core/math.h"
 #include "core/tile_sink.h"
 
 namespace rayo {
+
+// The largest in-memory film: 2^28 pixels (e.g. 16384 × 16384), 4 GiB of float RGBA. Larger
+// renders stream to their file (core/image/tile_stream.h); the preview and `rayo texture`, which
+// draw into a film, stop here.
+constexpr long long kMaxFilmPixels = 1LL << 28;
+
+// InputError(where) when a width × height film would exceed kMaxFilmPixels.
+inline void check_film_size(int width, int height, const std::string& where) {
+    const long long pixels = static_cast<long long>(width) * height;
+    if (pixels > kMaxFilmPixels) {
+        throw InputError(where, std::to_string(width) + "x" + std::to_string(height) +
+                                    " is too large for an in-memory image (at most " +
+                                    std::to_string(kMaxFilmPixels) +
+                                    " pixels, 4 GiB); only `rayo render` goes beyond, "
+                                    "streaming to its output file");
+    }
+}
 
 class Film : public TileSink {
   public:

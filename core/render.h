@@ -15,8 +15,10 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
 #include <vector>
 
 #include "core/adaptive_aa.h"
@@ -139,16 +141,22 @@ RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
     tbb::enumerable_thread_specific<std::vector<float>> buffers;
     sink.begin(grid);
 
+    // Tiles are handed out in order from one counter, one task per worker: a streaming sink
+    // that writes rows in order (core/image/tile_stream.h) then holds only the few bands that
+    // tiles in flight belong to. (A parallel_for over the tiles would split the range, and the
+    // second worker would start in the middle of the image.)
+    std::atomic<int> next_item{0};
+    const int workers = std::max(1, std::min(count, tbb::this_task_arena::max_concurrency()));
     // The caller's writes (sink, counters) before every task; every task before the merge.
     int handoff = 0;
     tsan_release(&handoff);
     tbb::parallel_for(
-        tbb::blocked_range<int>(0, count, 1),
-        [&](const tbb::blocked_range<int>& range) {
+        tbb::blocked_range<int>(0, workers, 1),
+        [&](const tbb::blocked_range<int>&) {
             tsan_acquire(&handoff);
             RayCounters& local = counters.local();
             std::vector<float>& rgba = buffers.local();
-            for (int item = range.begin(); item < range.end(); ++item) {
+            for (int item = next_item.fetch_add(1); item < count; item = next_item.fetch_add(1)) {
                 const Tile tile = grid.tile(tiles.empty() ? item : tiles[item]);
                 rgba.assign(tile.pixel_count() * 4, 0.0f);
                 if (settings.aa == AntiAliasing::Adaptive) {

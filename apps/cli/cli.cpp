@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iomanip>
 #include <map>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <set>
@@ -26,6 +27,7 @@
 #include "bench/lab/accuracy_bench.h"
 #include "core/error.h"
 #include "core/image/image_output.h"
+#include "core/image/tile_stream.h"
 #include "core/path_util.h"
 #include "core/progress.h"
 #include "shading/texture.h"
@@ -83,6 +85,10 @@ render options:
   --display D, --view V    OCIO display and view for PNG/TIFF/JPEG [config defaults]
   --range R                clamp (default) or normalize (divide by the image maximum)
   --half                   write EXR as half float
+  --stream, --no-stream    write the file as tiles finish, in memory that does not grow with
+                           the image (tiled EXR; PNG/TIFF/JPEG rows in order), or hold the
+                           whole image and write it at the end [stream above 1024x1024;
+                           docs/high-resolution.md]
   --quiet                  no progress bar and no summary line
   --stats                  print the full statistics table
 
@@ -175,6 +181,7 @@ struct RenderArgs {
     bool flat_spheres = false;
     bool single_rays = false;
     OutputOptions output_options;
+    StreamMode stream = StreamMode::Auto;
     bool quiet = false;
     bool stats = false;
 };
@@ -271,6 +278,10 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             } else {
                 throw UsageError(a + ": expected 'clamp' or 'normalize', got '" + m + "'");
             }
+        } else if (a == "--stream") {
+            r.stream = StreamMode::Always;
+        } else if (a == "--no-stream") {
+            r.stream = StreamMode::Never;
         } else if (a == "--half") {
             r.output_options.half_float_exr = true;
         } else if (a == "--quiet" || a == "-q") {
@@ -360,7 +371,7 @@ std::string aa_summary(const RenderSettings& s) {
 }
 
 void print_stats_table(std::ostream& out, const SceneDescription& d, const RenderResult& r,
-                       double parse_s, double write_s) {
+                       double parse_s, double write_s, bool streamed) {
     const RayCounters& c = r.counters;
     const double mrays = r.render_seconds > 0 ? c.total_rays() / r.render_seconds / 1e6 : 0.0;
     out << "statistics\n"
@@ -389,7 +400,10 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "  time parse                  " << format_duration(parse_s) << "\n"
         << "  time BVH build              " << format_duration(r.bvh_seconds) << "\n"
         << "  time render                 " << format_duration(r.render_seconds) << "\n"
-        << "  time write                  " << format_duration(write_s) << "\n"
+        << "  time write                  "
+        << (streamed ? std::to_string(write_s) + " s after the last tile (streamed output)"
+                     : format_duration(write_s))
+        << "\n"
         << "  rays camera                 " << c.camera << "\n"
         << "  rays shadow                 " << c.shadow << "\n"
         << "  rays shadow, filtered       " << c.shadow_filtered << "\n"
@@ -458,15 +472,16 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     if (writes_image) check_output(output, args.output_options);  // before the render
 
     const bool progress = !args.quiet && ProgressReporter::stderr_is_terminal();
+    const CameraDesc& cam = d.scene.camera;
+    const bool streaming =
+        choose_streaming(output, cam.width, cam.height, args.output_options, args.stream);
     const int threads = args.threads.value_or(0);
-    if (MpiWorld::distributed())
+    if (MpiWorld::distributed()) {
         distribution.emplace(threads > 0 ? threads : default_thread_count());
-    const RenderResult result =
-        render_scene(d, threads, progress, distribution ? &*distribution : nullptr);
-    if (!writes_image) return 0;
+    }
+    TileDistribution* const ranks = distribution ? &*distribution : nullptr;
 
     OutputOptions options = args.output_options;
-    const CameraDesc& cam = d.scene.camera;
     std::ostringstream camera_text;
     camera_text << "eye " << cam.eye.x << " " << cam.eye.y << " " << cam.eye.z << ", look_at "
                 << cam.look_at.x << " " << cam.look_at.y << " " << cam.look_at.z << ", up "
@@ -478,14 +493,30 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     } else {
         options.metadata["rayo:spp"] = std::to_string(d.settings.spp);
     }
-    options.metadata["rayo:threads"] = std::to_string(result.threads);
-    if (result.processes.size() > 1) {
-        options.metadata["rayo:ranks"] = std::to_string(result.processes.size());
+    options.metadata["rayo:threads"] =
+        std::to_string(threads > 0 ? threads : default_thread_count());
+    if (MpiWorld::distributed()) options.metadata["rayo:ranks"] = std::to_string(MpiWorld::size());
+
+    double write_s = 0.0;
+    RenderResult result;
+    if (streaming) {
+        // The header is written before the first tile: no rayo:render_seconds in a streamed file.
+        // Only the rank that writes the image opens it.
+        std::unique_ptr<TileStream> stream;
+        if (writes_image) {
+            stream = TileStream::open(output, cam.width, cam.height, d.settings.tile_size, options);
+        }
+        result = render_scene(d, threads, progress, stream.get(), ranks);
+        if (!writes_image) return 0;
+        write_s = stream->finish_seconds();
+    } else {
+        result = render_scene(d, threads, progress, nullptr, ranks);
+        if (!writes_image) return 0;
+        options.metadata["rayo:render_seconds"] = std::to_string(result.render_seconds);
+        start = std::chrono::steady_clock::now();
+        write_image(result.film, output, options);
+        write_s = seconds_since(start);
     }
-    options.metadata["rayo:render_seconds"] = std::to_string(result.render_seconds);
-    start = std::chrono::steady_clock::now();
-    write_image(result.film, output, options);
-    const double write_s = seconds_since(start);
 
     if (args.gi_log && result.radiosity) {
         // The chart of docs/radiosity.md: unshot energy (a fraction of the emitted) per shot.
@@ -495,7 +526,7 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         for (size_t i = 0; i < history.size(); ++i) log << i + 1 << "," << history[i] << "\n";
         if (!log) throw std::runtime_error("--gi-log: cannot write '" + *args.gi_log + "'");
     }
-    if (args.stats) print_stats_table(out, d, result, parse_s, write_s);
+    if (args.stats) print_stats_table(out, d, result, parse_s, write_s, streaming);
     if (!args.quiet) {
         const RayCounters& c = result.counters;
         const double mrays =
@@ -510,11 +541,11 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
             << " | parse " << format_duration(parse_s) << ", bvh "
             << format_duration(result.bvh_seconds) << ", render "
             << format_duration(result.render_seconds) << ", write " << format_duration(write_s)
-            << " | rays " << human_count(c.total_rays()) << " (camera " << human_count(c.camera)
-            << ", shadow " << human_count(c.shadow) << ", reflect " << human_count(c.reflection)
-            << ", refract " << human_count(c.refraction) << ") " << std::fixed
-            << std::setprecision(2) << mrays << " Mrays/s | total "
-            << format_duration(seconds_since(total_start)) << "\n";
+            << (streaming ? " after the last tile (streamed)" : "") << " | rays "
+            << human_count(c.total_rays()) << " (camera " << human_count(c.camera) << ", shadow "
+            << human_count(c.shadow) << ", reflect " << human_count(c.reflection) << ", refract "
+            << human_count(c.refraction) << ") " << std::fixed << std::setprecision(2) << mrays
+            << " Mrays/s | total " << format_duration(seconds_since(total_start)) << "\n";
         if (result.radiosity) {
             const RadiosityStats& rs = result.radiosity_stats;
             out << "rayo: radiosity " << result.radiosity_patches << " patches | solve "
@@ -603,6 +634,7 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
         throw UsageError("texture: unknown texture '" + *name + "' (expected one of: " + known +
                          ")");
     }
+    check_film_size(width, height, "--size");
     Texture texture = make_texture(*name);
     if (scale) texture.scale = *scale;
     texture.seed = seed;

@@ -24,6 +24,7 @@ PreviewResult render_preview(const SceneDescription& description, const PreviewO
                                      "synthetic camera); this scene's is '") +
                              projection_name(camera.projection()) + "'");
     }
+    check_film_size(camera.width(), camera.height(), description.source + "#/camera");
     PreviewResult result;
     if (options.over_render) {
         SceneDescription one_sample = description;

@@ -11,6 +11,7 @@
 #include "core/accel.h"
 #include "core/camera.h"
 #include "core/error.h"
+#include "core/film.h"
 #include "core/render.h"
 #include "shading/radiosity_field.h"
 #include "shading/whitted.h"
@@ -88,9 +89,13 @@ int default_thread_count() {
 }
 
 RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress,
-                          TileDistribution* distribution) {
+                          TileSink* sink, TileDistribution* distribution) {
     const Camera camera = Camera::create(description.scene.camera, description.source + "#/camera");
     check_material_ids(description);
+    const bool writes_image = distribution == nullptr || distribution->writes_image();
+    if (sink == nullptr && writes_image) {
+        check_film_size(camera.width(), camera.height(), description.source + "#/camera");
+    }
     RenderResult result;
     result.threads = threads > 0 ? threads : default_thread_count();
     // Limits TBB and Embree's BVH build alike (docs/architecture.md: no task_scheduler_init in
@@ -138,8 +143,8 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
 
     const WhittedIntegrator integrator(accel, description.shading, description.settings.whitted,
                                        radiosity.get());
-    const bool writes_image = distribution == nullptr || distribution->writes_image();
-    if (writes_image) result.film = Film(camera.width(), camera.height());
+    if (sink == nullptr && writes_image) result.film = Film(camera.width(), camera.height());
+    TileSink& target = sink ? *sink : result.film;
     TileSettings tiles;
     tiles.spp = description.settings.spp;
     tiles.tile_size = description.settings.tile_size;
@@ -157,13 +162,13 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
         ProgressReporter progress(static_cast<uint64_t>(camera.width()) * camera.height(),
                                   "rendering", show_progress && writes_image);
         if (distribution == nullptr) {
-            result.counters = render_tiles(camera, integrator, tiles, result.film, &progress);
+            result.counters = render_tiles(camera, integrator, tiles, target, &progress);
         } else {
             const TileGrid grid(camera.width(), camera.height(), tiles.tile_size);
-            const auto render_chunk = [&](const std::vector<int>& list, TileSink& sink) {
-                return render_tiles(camera, integrator, tiles, sink, nullptr, list);
+            const auto render_chunk = [&](const std::vector<int>& list, TileSink& chunk_sink) {
+                return render_tiles(camera, integrator, tiles, chunk_sink, nullptr, list);
             };
-            result.counters = distribution->render(grid, {}, render_chunk, result.film, &progress);
+            result.counters = distribution->render(grid, {}, render_chunk, target, &progress);
             result.processes = distribution->work();
         }
     }

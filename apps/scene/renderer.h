@@ -1,11 +1,13 @@
 #pragma once
-// One render of a scene description, end to end in memory: camera validation, the Embree BVH,
-// the Whitted integrator in the TBB tile loop. Returns the film, ray counts and phase times.
+// One render of a scene description: camera validation, the Embree BVH, the Whitted integrator
+// in the TBB tile loop, into an in-memory film or a caller's tile sink. Returns the film (when
+// it was used), ray counts and phase times.
 #include "apps/scene/scene_description.h"
 #include "apps/scene/sphere_method_choice.h"
 #include "core/film.h"
 #include "core/stats.h"
 #include "core/tile_distribution.h"
+#include "core/tile_sink.h"
 
 namespace rayo {
 
@@ -28,11 +30,13 @@ struct RenderResult {
     std::vector<ProcessWork> processes;
 };
 
-// threads = 0: all cores. Throws InputError for an invalid camera. With a `distribution`, the
-// tiles are shared out among its processes (every process loads the scene and builds the BVH);
-// the film is filled, and the progress shown, only where the distribution writes the image.
+// threads = 0: all cores. Throws InputError for an invalid camera. The tiles go to `sink` when
+// given (e.g. a file written as tiles finish, core/image/tile_stream.h; result.film stays 1×1),
+// else to result.film. With a `distribution`, the tiles are shared out among its processes
+// (every process loads the scene and builds the BVH); the sink or film is filled, and the
+// progress shown, only where the distribution writes the image (pass no sink elsewhere).
 RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress,
-                          TileDistribution* distribution = nullptr);
+                          TileSink* sink = nullptr, TileDistribution* distribution = nullptr);
 
 // The thread count TBB uses when none is given.
 int default_thread_count();

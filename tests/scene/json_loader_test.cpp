@@ -359,7 +359,7 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"FovOutOfRange", R"({"rayo": 1, "camera": {"hfov": 180}})",
                   "scene.json#/camera/hfov", "(0, 180)"},
         ErrorCase{"WidthNotInteger", R"({"rayo": 1, "camera": {"width": 64.5}})",
-                  "scene.json#/camera/width", "expected an integer in [1, 32768]"},
+                  "scene.json#/camera/width", "expected an integer in [1, 65536]"},
         ErrorCase{"WidthZero", R"({"rayo": 1, "camera": {"width": 0}})", "scene.json#/camera/width",
                   "got 0"},
         ErrorCase{"EyeEqualsLookAt", R"({"rayo": 1, "camera": {"eye": [1, 1, 1],

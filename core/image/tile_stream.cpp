@@ -1,0 +1,305 @@
+#include "core/image/tile_stream.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "core/error.h"
+#include "core/image/atomic_file.h"
+#include "core/image/interrupt_cleanup.h"
+#include "core/image/output_encoding.h"
+
+namespace rayo {
+
+namespace {
+
+// The most bytes queued for the writer thread before workers wait (at least one item is always
+// taken). What is queued when the last tile finishes is what finish() still has to write: at
+// 16 MB, 256 EXR tiles took 0.3 s to compress after a 2 s render at 2048²; at 2 MB, 32 tiles.
+constexpr size_t kStreamQueueBytes = size_t(2) << 20;
+
+std::string size_text(long long width, long long height) {
+    return std::to_string(width) + "x" + std::to_string(height);
+}
+
+// The temporary file of one output, its OpenImageIO writer and the writer thread that runs the
+// queued jobs in order. Jobs return false on failure; the first failure is kept and reported by
+// push() and finish(). Destroyed without a successful finish(), it stops the thread and removes
+// the temporary.
+class FileWriter {
+  public:
+    using Job = std::function<bool(OIIO::ImageOutput&)>;
+
+    FileWriter(const std::string& path, const OIIO::ImageSpec& spec)
+        : m_path(path), m_tmp(temporary_path_for(path)), m_guard(m_tmp) {
+        errno = 0;
+        m_out = OIIO::ImageOutput::create(m_tmp);
+        if (!m_out) fail_now(OIIO::geterror());
+        if (!m_out->open(m_tmp, spec)) {
+            const int error = errno;
+            const std::string reason = m_out->geterror();
+            m_out.reset();
+            std::remove(m_tmp.c_str());
+            errno = error;
+            fail_now(reason);
+        }
+        m_thread = std::thread([this] { run(); });
+    }
+
+    ~FileWriter() {
+        if (m_thread.joinable()) {
+            {
+                std::lock_guard<std::mutex> lock(m_mutex);
+                m_stop = true;
+                m_abandon = true;
+            }
+            m_wake.notify_all();
+            m_thread.join();
+        }
+        if (!m_committed) {
+            m_out.reset();  // closes the file
+            std::remove(m_tmp.c_str());
+        }
+    }
+
+    // Queues a job of `bytes` held bytes; waits while the queue holds kStreamQueueBytes (unless
+    // it is empty). Throws the writer's failure, if any.
+    void push(size_t bytes, Job job) {
+        std::unique_lock<std::mutex> lock(m_mutex);
+        m_room.wait(lock, [&] {
+            return !m_error.empty() || m_jobs.empty() || m_queued + bytes <= kStreamQueueBytes;
+        });
+        throw_failure(lock);
+        m_queued += bytes;
+        m_jobs.push_back({bytes, std::move(job)});
+        m_wake.notify_one();
+    }
+
+    // Writes what is queued, closes the file and renames it onto the path.
+    void finish() {
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            m_stop = true;
+        }
+        m_wake.notify_all();
+        m_thread.join();
+        {
+            std::unique_lock<std::mutex> lock(m_mutex);
+            throw_failure(lock);
+        }
+        errno = 0;
+        if (!m_out->close()) fail_now(m_out->geterror());
+        if (std::rename(m_tmp.c_str(), m_path.c_str()) != 0)
+            fail_now("cannot rename the temporary file");
+        m_committed = true;
+    }
+
+  private:
+    struct Item {
+        size_t bytes;
+        Job job;
+    };
+
+    void run() {
+        std::unique_lock<std::mutex> lock(m_mutex);
+        for (;;) {
+            m_wake.wait(lock, [&] { return m_stop || !m_jobs.empty(); });
+            if (m_abandon || (m_jobs.empty() && m_stop)) return;
+            Item item = std::move(m_jobs.front());
+            m_jobs.pop_front();
+            if (m_error.empty()) {
+                lock.unlock();
+                errno = 0;
+                const bool ok = item.job(*m_out);
+                const int error = errno;
+                const std::string reason = ok ? std::string() : m_out->geterror();
+                lock.lock();
+                if (!ok) m_error = write_failure(reason, error, m_tmp, m_path);
+            }
+            m_queued -= item.bytes;
+            m_room.notify_all();
+        }
+    }
+
+    void throw_failure(std::unique_lock<std::mutex>&) const {
+        if (!m_error.empty()) throw InputError(m_path, "cannot write: " + m_error);
+    }
+    [[noreturn]] void fail_now(const std::string& reason) const {
+        throw InputError(m_path, "cannot write: " + write_failure(reason, errno, m_tmp, m_path));
+    }
+
+    std::string m_path, m_tmp;
+    TemporaryFileGuard m_guard;
+    std::unique_ptr<OIIO::ImageOutput> m_out;
+    std::mutex m_mutex;
+    std::condition_variable m_wake, m_room;
+    std::deque<Item> m_jobs;
+    size_t m_queued = 0;
+    bool m_stop = false, m_abandon = false, m_committed = false;
+    std::string m_error;
+    std::thread m_thread;
+};
+
+// Seconds since `start`.
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A tiled EXR: each tile is copied and queued as it arrives.
+class ExrTileStream : public TileStream {
+  public:
+    ExrTileStream(const std::string& path, const OIIO::ImageSpec& spec) : m_writer(path, spec) {}
+
+    void write_tile(const Tile& tile, const float* rgba) override {
+        auto pixels = std::make_shared<std::vector<float>>(rgba, rgba + tile.pixel_count() * 4);
+        m_writer.push(pixels->size() * sizeof(float), [tile, pixels](OIIO::ImageOutput& out) {
+            return out.write_tiles(tile.x0, tile.x0 + tile.width, tile.y0, tile.y0 + tile.height, 0,
+                                   1, OIIO::TypeDesc::FLOAT, pixels->data());
+        });
+    }
+
+    void finish() override {
+        const auto start = std::chrono::steady_clock::now();
+        m_writer.finish();
+        m_finish_seconds = seconds_since(start);
+    }
+
+  private:
+    FileWriter m_writer;
+};
+
+// PNG/TIFF/JPEG: tiles encoded for display on the workers, gathered into bands of tile rows,
+// complete bands written in order.
+class BandStream : public TileStream {
+  public:
+    BandStream(const std::string& path, ImageFormat format, const OIIO::ImageSpec& spec,
+               const OutputOptions& options)
+        : m_encoder(format, path, options), m_path(path), m_writer(path, spec) {}
+
+    void begin(const TileGrid& grid) override { m_grid.emplace(grid); }
+
+    void write_tile(const Tile& tile, const float* rgba) override {
+        const size_t pixels = tile.pixel_count();
+        const size_t pixel_bytes = m_encoder.bytes_per_pixel();
+        std::vector<float> display(rgba, rgba + pixels * 4);
+        DisplayEncoder::unpremultiply(display.data(), pixels);
+        m_encoder.apply_view(display.data(), tile.width, tile.height);
+        std::vector<unsigned char> encoded(pixels * pixel_bytes);
+        m_encoder.quantise(display.data(), pixels, encoded.data());
+
+        const TileGrid& grid = *m_grid;
+        const int row = tile.y0 / grid.tile_size();
+        const size_t row_bytes = static_cast<size_t>(grid.image_width()) * pixel_bytes;
+        std::lock_guard<std::mutex> lock(m_mutex);
+        Band& band = m_bands[row];
+        if (band.bytes.empty()) {
+            band.y0 = tile.y0;
+            band.height = tile.height;
+            band.missing = grid.columns();
+            band.bytes.resize(row_bytes * tile.height);
+        }
+        for (int y = 0; y < tile.height; ++y) {
+            std::memcpy(&band.bytes[y * row_bytes + tile.x0 * pixel_bytes],
+                        &encoded[static_cast<size_t>(y) * tile.width * pixel_bytes],
+                        tile.width * pixel_bytes);
+        }
+        --band.missing;
+        // Bands go to the writer in file order, each once it and all above it are complete.
+        for (auto next = m_bands.find(m_next_row);
+             next != m_bands.end() && next->second.missing == 0; next = m_bands.find(m_next_row)) {
+            auto bytes =
+                std::make_shared<std::vector<unsigned char>>(std::move(next->second.bytes));
+            const int y0 = next->second.y0, y1 = y0 + next->second.height;
+            const OIIO::TypeDesc type = m_encoder.type();
+            m_bands.erase(next);
+            ++m_next_row;
+            m_writer.push(bytes->size(), [bytes, y0, y1, type](OIIO::ImageOutput& out) {
+                return out.write_scanlines(y0, y1, 0, type, bytes->data());
+            });
+        }
+    }
+
+    void finish() override {
+        const auto start = std::chrono::steady_clock::now();
+        if (!m_grid || m_next_row != m_grid->rows())
+            throw InputError(m_path, "cannot write: the render did not deliver every tile");
+        m_writer.finish();
+        m_finish_seconds = seconds_since(start);
+    }
+
+  private:
+    struct Band {
+        int y0 = 0, height = 0, missing = 0;
+        std::vector<unsigned char> bytes;
+    };
+
+    DisplayEncoder m_encoder;
+    std::string m_path;
+    std::optional<TileGrid> m_grid;
+    std::mutex m_mutex;
+    std::map<int, Band> m_bands;  // bands not yet queued, by tile row
+    int m_next_row = 0;           // the next band to queue
+    FileWriter m_writer;
+};
+
+}  // namespace
+
+bool choose_streaming(const std::string& path, int width, int height, const OutputOptions& options,
+                      StreamMode mode) {
+    const ImageFormat format = image_format_of(path);
+    const int side = max_image_side(format);
+    if (width > side || height > side) {
+        throw InputError(path, "cannot write " + size_text(width, height) +
+                                   ": the format stores at most " + std::to_string(side) +
+                                   " pixels a side");
+    }
+    const long long pixels = static_cast<long long>(width) * height;
+    const bool normalize = format != ImageFormat::Exr && options.range == RangeMode::Normalize;
+    if (normalize && mode == StreamMode::Always) {
+        throw InputError(path,
+                         "--range normalize needs the whole image's maximum before the "
+                         "first row is written, so it cannot stream; use --range clamp, or "
+                         "write EXR and normalize it afterwards");
+    }
+    const bool stream = mode == StreamMode::Always ||
+                        (mode == StreamMode::Auto && !normalize && pixels > kStreamAbovePixels);
+    if (!stream && pixels > kMaxFilmPixels) {
+        throw InputError(path, "an image of " + size_text(width, height) + " (" +
+                                   std::to_string(pixels) +
+                                   " pixels) is too large for an "
+                                   "in-memory film (at most " +
+                                   std::to_string(kMaxFilmPixels) + " pixels, 4 GiB)" +
+                                   (normalize ? ", which --range normalize needs; use --range "
+                                                "clamp, or write EXR and normalize it afterwards"
+                                              : "; let it stream (without --no-stream)"));
+    }
+    return stream;
+}
+
+std::unique_ptr<TileStream> TileStream::open(const std::string& path, int width, int height,
+                                             int tile_size, const OutputOptions& options) {
+    const ImageFormat format = image_format_of(path);
+    OIIO::ImageSpec spec = image_spec(format, width, height, options);
+    if (format == ImageFormat::Exr) {
+        spec.tile_width = tile_size;
+        spec.tile_height = tile_size;
+        // Tiles are written as they finish: OpenEXR must not buffer out-of-order tiles.
+        spec.attribute("openexr:lineOrder", "randomY");
+        return std::make_unique<ExrTileStream>(path, spec);
+    }
+    return std::make_unique<BandStream>(path, format, spec, options);
+}
+
+}  // namespace rayo
