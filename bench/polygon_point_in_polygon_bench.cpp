@@ -59,6 +59,20 @@ struct PolygonScene {
     }
 };
 
+// Makes `geometry` the one geometry of out.scene, commits it and records the build time since
+// `start` and the bytes Embree gained since `before`.
+void commit_alone(RTCGeometry geometry, std::chrono::steady_clock::time_point start,
+                  long long before, PolygonScene& out) {
+    out.scene = rtcNewScene(embree_device());
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(out.scene, geometry);
+    rtcReleaseGeometry(geometry);
+    rtcCommitScene(out.scene);
+    out.build_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.bytes = double(embree_bytes_in_use() - before);
+}
+
 void build_triangles(const std::vector<std::vector<Vec3>>& gears, PolygonScene& out) {
     const long long before = embree_bytes_in_use();
     const auto start = std::chrono::steady_clock::now();
@@ -71,7 +85,6 @@ void build_triangles(const std::vector<std::vector<Vec3>>& gears, PolygonScene& 
         }
         positions.insert(positions.end(), outline.begin(), outline.end());
     }
-    out.scene = rtcNewScene(embree_device());
     RTCGeometry geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vertices = static_cast<float*>(
         rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
@@ -85,13 +98,7 @@ void build_triangles(const std::vector<std::vector<Vec3>>& gears, PolygonScene& 
     for (size_t i = 0; i < triangles.size(); ++i) {
         for (int k = 0; k < 3; ++k) indices[3 * i + k] = triangles[i][k];
     }
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(out.scene, geometry);
-    rtcReleaseGeometry(geometry);
-    rtcCommitScene(out.scene);
-    out.build_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    out.bytes = double(embree_bytes_in_use() - before);  // the buffers are Embree's
+    commit_alone(geometry, start, before, out);  // the buffers are Embree's
 }
 
 void build_point_in_polygon(const std::vector<std::vector<Vec3>>& gears, PolygonScene& out) {
@@ -101,22 +108,14 @@ void build_point_in_polygon(const std::vector<std::vector<Vec3>>& gears, Polygon
         out.polygons.push_back(*PlanarPolygon::make(outline, FillRule::EvenOdd));
     }
     out.data = {out.polygons.data(), out.polygons.data()};
-    out.scene = rtcNewScene(embree_device());
     RTCGeometry geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
     rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(out.polygons.size()));
     rtcSetGeometryUserData(geometry, &out.data);
     rtcSetGeometryBoundsFunction(geometry, user_bounds<PlanarPolygon>, nullptr);
     rtcSetGeometryIntersectFunction(geometry, user_intersect<PlanarPolygon>);
     rtcSetGeometryOccludedFunction(geometry, user_occluded<PlanarPolygon>);
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(out.scene, geometry);
-    rtcReleaseGeometry(geometry);
-    rtcCommitScene(out.scene);
-    out.build_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    double own = 0.0;
-    for (const PlanarPolygon& p : out.polygons) own += double(p.bytes());
-    out.bytes = double(embree_bytes_in_use() - before) + own;
+    commit_alone(geometry, start, before, out);
+    for (const PlanarPolygon& p : out.polygons) out.bytes += double(p.bytes());
 }
 
 template <void (*Build)(const std::vector<std::vector<Vec3>>&, PolygonScene&)>

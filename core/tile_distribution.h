@@ -39,7 +39,6 @@ class TileDistribution {
                                ProgressReporter* progress) = 0;
     // Whether this process writes the image (gets the tiles, prints the summary).
     virtual bool writes_image() const = 0;
-    virtual int process_count() const = 0;
     // Per process (index = rank), filled on the writing process by render().
     virtual const std::vector<ProcessWork>& work() const = 0;
 };

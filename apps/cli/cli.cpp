@@ -457,16 +457,18 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     }
     apply_overrides(args, d);
     if (!args.quiet && writes_image && d.settings.gi == GlobalIllumination::Radiosity) {
-        const std::pair<size_t, const char*> untessellated[] = {
-            {d.scene.shapes.of<Quadric>().size(), "general quadric(s)"},
-            {d.scene.shapes.of<Blob>().size(), "blob(s)"},
-            {d.scene.shapes.of<Csg>().size(), "CSG object(s)"}};
-        for (const auto& [count, what] : untessellated) {
-            if (count == 0) continue;
-            err << "rayo: warning: radiosity: " << count << " " << what
-                << " have no tessellation: they occlude but neither shoot nor receive "
+        // Shape types without a tessellation (no pieces: the general quadric, blobs, CSG) only
+        // occlude in the solve (docs/radiosity.md).
+        d.scene.shapes.for_each([&](const auto& shapes) {
+            using S = ShapeOf<decltype(shapes)>;
+            if (shapes.empty()) return;
+            SurfacePieces pieces;
+            shapes.front().pieces(pieces);
+            if (!pieces.empty()) return;
+            err << "rayo: warning: radiosity: " << shapes.size() << " " << S::kName
+                << "(s) have no tessellation: they occlude but neither shoot nor receive "
                    "(docs/radiosity.md)\n";
-        }
+        });
     }
     const std::string output = args.output ? *args.output : default_output_path(args);
     if (writes_image) check_output(output, args.output_options);  // before the render

@@ -17,6 +17,7 @@
 #endif
 
 namespace rayo {
+#if RAYO_HAVE_MPI
 namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -71,21 +72,6 @@ std::vector<int> tile_list(const TileGrid& grid, const std::vector<int>& tiles) 
     return all;
 }
 
-RayCounters render_here(const TileGrid& grid, const std::vector<int>& tiles,
-                        const RenderTilesFunction& render_tiles, TileSink& sink,
-                        ProgressReporter* progress, ProcessWork& work) {
-    const auto start = std::chrono::steady_clock::now();
-    ForwardingSink forward(sink, progress);
-    sink.begin(grid);
-    const std::vector<int> list = tile_list(grid, tiles);
-    work.counters = render_tiles(list, forward);
-    work.tiles = list.size();
-    sink.finish();
-    work.seconds = seconds_since(start);
-    return work.counters;
-}
-
-#if RAYO_HAVE_MPI
 constexpr int kTag = 4242;
 enum MessageKind : int32_t { kRequest = 1, kTile = 2, kDone = 3 };
 // Every message to rank 0 starts with this; a tile's float RGBA or a ProcessWork follows.
@@ -126,9 +112,9 @@ void send_to_rank_zero(const Header& header, const void* payload, size_t bytes,
     std::cerr.flush();
     MpiWorld::abort(1);
 }
-#endif
 
 }  // namespace
+#endif
 
 MpiTileDistribution::MpiTileDistribution(int threads) : m_threads(std::max(1, threads)) {}
 
@@ -136,17 +122,14 @@ bool MpiTileDistribution::writes_image() const {
     return MpiWorld::rank() == 0;
 }
 
-int MpiTileDistribution::process_count() const {
-    return MpiWorld::size();
-}
-
 RayCounters MpiTileDistribution::render(const TileGrid& grid, const std::vector<int>& tiles,
                                         const RenderTilesFunction& render_tiles, TileSink& sink,
                                         ProgressReporter* progress) {
-    m_work.assign(static_cast<size_t>(MpiWorld::size()), ProcessWork{});
+#if RAYO_HAVE_MPI
     if (!MpiWorld::distributed()) {
-        return render_here(grid, tiles, render_tiles, sink, progress, m_work[0]);
+        throw std::logic_error("MpiTileDistribution: a world of one renders without one");
     }
+    m_work.assign(static_cast<size_t>(MpiWorld::size()), ProcessWork{});
     // Every rank has its scene and BVH: the ranks that failed before this point said so (and
     // one of them printed why); the others stop here too.
     const int failure = MpiWorld::agree_on_failure(false, {}, 0, std::cerr);
@@ -154,13 +137,14 @@ RayCounters MpiTileDistribution::render(const TileGrid& grid, const std::vector<
     m_agreed = true;
     try {
         if (MpiWorld::rank() == 0) return coordinate(grid, tiles, render_tiles, sink, progress);
-        return work_for_rank_zero(grid, render_tiles);
+        return work_for_rank_zero(render_tiles);
     } catch (const std::exception& e) {
-#if RAYO_HAVE_MPI
         fail_everywhere(e.what());
-#endif
-        throw;
     }
+#else
+    (void)grid, (void)tiles, (void)render_tiles, (void)sink, (void)progress;
+    throw std::logic_error("MpiTileDistribution: rayo was built without MPI");
+#endif
 }
 
 #if RAYO_HAVE_MPI
@@ -237,9 +221,7 @@ RayCounters MpiTileDistribution::coordinate(const TileGrid& grid, const std::vec
     return total;
 }
 
-RayCounters MpiTileDistribution::work_for_rank_zero(const TileGrid& grid,
-                                                    const RenderTilesFunction& render_tiles) {
-    (void)grid;
+RayCounters MpiTileDistribution::work_for_rank_zero(const RenderTilesFunction& render_tiles) {
     const auto start = std::chrono::steady_clock::now();
     ProcessWork& mine = m_work[static_cast<size_t>(MpiWorld::rank())];
     std::vector<unsigned char> message;
@@ -263,15 +245,6 @@ RayCounters MpiTileDistribution::work_for_rank_zero(const TileGrid& grid,
     mine.seconds = seconds_since(start);
     send_to_rank_zero({kDone, 0}, &mine, sizeof(ProcessWork), message);
     return mine.counters;
-}
-#else
-RayCounters MpiTileDistribution::coordinate(const TileGrid&, const std::vector<int>&,
-                                            const RenderTilesFunction&, TileSink&,
-                                            ProgressReporter*) {
-    throw std::logic_error("rayo was built without MPI");
-}
-RayCounters MpiTileDistribution::work_for_rank_zero(const TileGrid&, const RenderTilesFunction&) {
-    throw std::logic_error("rayo was built without MPI");
 }
 #endif
 

@@ -2,8 +2,8 @@
 // Tiles shared out among MPI ranks (docs/distributed.md): rank 0 hands out tile indices on
 // request, in chunks that shrink toward the end (guided scheduling), renders chunks itself on a
 // second thread, and receives every finished tile into the sink; no other rank holds more than
-// the tiles of its current chunk. Built without MPI, or in a world of one, everything is
-// rendered here.
+// the tiles of its current chunk. Only for a world of several ranks (MpiWorld::distributed());
+// one process renders without a distribution.
 #include <exception>
 #include <vector>
 
@@ -28,7 +28,6 @@ class MpiTileDistribution : public TileDistribution {
                        const RenderTilesFunction& render_tiles, TileSink& sink,
                        ProgressReporter* progress) override;
     bool writes_image() const override;
-    int process_count() const override;
     const std::vector<ProcessWork>& work() const override { return m_work; }
     // Whether render() has passed the ranks' agreement that none failed before it: an error
     // before that point must be agreed on (MpiWorld::agree_on_failure); an error after it ends
@@ -39,7 +38,7 @@ class MpiTileDistribution : public TileDistribution {
     RayCounters coordinate(const TileGrid& grid, const std::vector<int>& tiles,
                            const RenderTilesFunction& render_tiles, TileSink& sink,
                            ProgressReporter* progress);
-    RayCounters work_for_rank_zero(const TileGrid& grid, const RenderTilesFunction& render_tiles);
+    RayCounters work_for_rank_zero(const RenderTilesFunction& render_tiles);
 
     int m_threads;
     bool m_agreed = false;

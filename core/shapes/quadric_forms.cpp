@@ -38,13 +38,19 @@ void add_profiles(const ClippedQuadric& q, Outline& out, double z0, double z1, R
     }
 }
 
+// A piece of `kind` placed in the quadric's local frame.
+SurfacePiece in_frame_of(const ClippedQuadric& q, SurfacePiece::Kind kind) {
+    SurfacePiece piece;
+    piece.kind = kind;
+    piece.origin = q.origin;
+    piece.frame = q.rotation;
+    return piece;
+}
+
 // A surface of revolution about the local z axis of a quadric's frame, over [z0, z1].
 SurfacePiece revolution(const ClippedQuadric& q, double z0, double z1,
                         const std::array<double, 3>& r2) {
-    SurfacePiece piece;
-    piece.kind = SurfacePiece::Kind::Revolution;
-    piece.origin = q.origin;
-    piece.frame = q.rotation;
+    SurfacePiece piece = in_frame_of(q, SurfacePiece::Kind::Revolution);
     piece.z0 = z0;
     piece.z1 = z1;
     piece.r2 = r2;
@@ -54,10 +60,7 @@ SurfacePiece revolution(const ClippedQuadric& q, double z0, double z1,
 // The disc of `radius` at local height z that a box face cuts from a capped solid; `down` when
 // its outward normal is −z.
 SurfacePiece cap(const ClippedQuadric& q, double z, double radius, bool down) {
-    SurfacePiece piece;
-    piece.kind = SurfacePiece::Kind::Cap;
-    piece.origin = q.origin;
-    piece.frame = q.rotation;
+    SurfacePiece piece = in_frame_of(q, SurfacePiece::Kind::Cap);
     piece.z0 = z;
     piece.radius = radius;
     piece.flip = down;

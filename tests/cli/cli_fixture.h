@@ -1,6 +1,7 @@
 #pragma once
 // A GoogleTest fixture that runs the built `rayo` executable (RAYO_CLI_PATH) in a fresh folder
 // of its own, so tests can check exit status, messages and which files a command left behind.
+#include <OpenImageIO/imageio.h>
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -47,6 +48,17 @@ class CliFixture : public ::testing::Test {
         std::filesystem::create_directories(m_dir);
     }
     void TearDown() override { std::filesystem::remove_all(m_dir); }
+
+    // The float RGBA pixels of an image in the folder (empty when it cannot be read): for
+    // comparing renders whose files differ in metadata (render times).
+    std::vector<float> read_pixels(const std::string& name) const {
+        std::vector<float> rgba;
+        auto in = OIIO::ImageInput::open((m_dir / name).string());
+        if (!in) return rgba;
+        rgba.resize(static_cast<size_t>(in->spec().width) * in->spec().height * 4);
+        EXPECT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, rgba.data()));
+        return rgba;
+    }
 
     // Runs `rayo ARGS` in the folder; the log lives beside it so listings see only rayo's files.
     // `launcher` (e.g. "mpirun -np 3") goes before the executable.

@@ -3,7 +3,6 @@
 // Built only when rayo is built with MPI (setup.sh installs Open MPI); rayo runs as one
 // process otherwise, which every other test covers.
 #if RAYO_HAVE_MPI
-#include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include "tests/cli/cli_fixture.h"
@@ -60,20 +59,12 @@ class MpiCli : public CliFixture {
         if (::geteuid() == 0) launcher += " --allow-run-as-root";
         return launcher;
     }
-    std::vector<float> pixels(const std::string& name) const {
-        std::vector<float> rgba;
-        auto in = OIIO::ImageInput::open((m_dir / name).string());
-        if (!in) return rgba;
-        rgba.resize(static_cast<size_t>(in->spec().width) * in->spec().height * 4);
-        EXPECT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, rgba.data()));
-        return rgba;
-    }
 };
 
 TEST_F(MpiCli, SameBitsAsOneProcessForAnyRanksAndThreads) {
     write("scene.nff", kScene);
     ASSERT_EQ(run("render scene.nff --tile-size 16 --quiet -o one.exr").exit_code, 0);
-    const std::vector<float> one = pixels("one.exr");
+    const std::vector<float> one = read_pixels("one.exr");
     ASSERT_EQ(one.size(), 96u * 64u * 4u);
     const struct {
         int ranks;
@@ -84,7 +75,7 @@ TEST_F(MpiCli, SameBitsAsOneProcessForAnyRanksAndThreads) {
             run(std::string("render scene.nff --tile-size 16 --quiet -o many.exr ") + c.args,
                 mpirun(c.ranks));
         ASSERT_EQ(r.exit_code, 0) << c.ranks << " ranks: " << r.output;
-        EXPECT_EQ(pixels("many.exr"), one) << c.ranks << " ranks " << c.args;
+        EXPECT_EQ(read_pixels("many.exr"), one) << c.ranks << " ranks " << c.args;
     }
 }
 
@@ -94,8 +85,8 @@ TEST_F(MpiCli, AdaptiveAntialiasingAndLargeTilesToo) {
     ASSERT_EQ(run(args + "one.exr").exit_code, 0);
     const CommandResult r = run(args + "many.exr --threads 1", mpirun(3));
     ASSERT_EQ(r.exit_code, 0) << r.output;
-    EXPECT_EQ(pixels("many.exr"), pixels("one.exr"));
-    EXPECT_EQ(pixels("one.exr").size(), 96u * 64u * 4u);
+    EXPECT_EQ(read_pixels("many.exr"), read_pixels("one.exr"));
+    EXPECT_EQ(read_pixels("one.exr").size(), 96u * 64u * 4u);
 }
 
 TEST_F(MpiCli, SummaryAndStatsNameTheRanks) {
