@@ -41,6 +41,8 @@ void InstanceBinding::surface(const Ray& ray, const RTCRayHit& rayhit, SurfaceHi
     const uint32_t geometry = rayhit.hit.geomID;
     m_group.bindings[geometry]->surface(local, rayhit, out);
     out.position = Vec3(m_to_world * glm::vec4(out.position, 1.0f));
+    out.terminator_offset =
+        glm::mat3(m_to_world) * out.terminator_offset;  // a difference of points
     // Normals are covectors: n' = (M⁻¹)ᵀ n keeps them perpendicular to the mapped surface (and
     // outward, for any sign of det M).
     out.geometric_normal = glm::normalize(m_normal_to_world * out.geometric_normal);

@@ -15,6 +15,9 @@ struct SurfaceHit {
     Vec3 position{0.0f};          // on the surface (sphere hits re-projected onto the sphere)
     Vec3 geometric_normal{0.0f};  // unit, outward (analytic shapes) or by winding (triangles)
     Vec3 shading_normal{0.0f};    // unit, interpolated where the mesh has normals; same side as Ng
+    // Smooth-shaded triangles: from `position` to where shadow rays leaving the geometric
+    // normal's side start (core/shadow_terminator.h); zero for every other surface.
+    Vec3 terminator_offset{0.0f};
     float object_size = 0.0f;     // radius or extent: scales the spawned-ray offset
     uint32_t material = 0;
     uint32_t shape = 0;      // the shape type: its index in AnalyticShapes, or kTriangleShape

@@ -130,8 +130,14 @@ WhittedIntegrator::LightSide WhittedIntegrator::light_sample(const ShadingPoint&
     if (count > 1) light_radiance /= static_cast<float>(count);
     // Lights behind the surface (as seen from the arriving side) contribute nothing, unless the
     // surface is translucent and the light is wholly behind it (both normals agree).
+    // With the shadow-terminator offset (core/shadow_terminator.h), the smooth surface decides
+    // alone: a light below the flat triangle but above the interpolated normal's horizon is
+    // seen from the lifted origin unless the mesh itself is in the way.
+    const bool lifted =
+        p.entering && m_settings.terminator_offset && hit.terminator_offset != Vec3(0.0f);
     LightSide side = LightSide::Front;
-    if (glm::dot(p.normal, to_light) <= 0.0f || glm::dot(p.facing_geometric, to_light) <= 0.0f) {
+    if (glm::dot(p.normal, to_light) <= 0.0f ||
+        (!lifted && glm::dot(p.facing_geometric, to_light) <= 0.0f)) {
         if (!p.material().translucent() || glm::dot(p.normal, to_light) >= 0.0f ||
             glm::dot(p.facing_geometric, to_light) >= 0.0f) {
             return LightSide::None;
@@ -140,6 +146,7 @@ WhittedIntegrator::LightSide WhittedIntegrator::light_sample(const ShadingPoint&
     }
     shadow.origin =
         side == LightSide::Front ? p.shadow_origin : offset_ray_origin(hit, -p.facing_geometric);
+    if (side == LightSide::Front && lifted) shadow.origin += hit.terminator_offset;
     shadow.direction = to_light;
     shadow.tnear = 0.0f;
     // Stop just short of a point light so the light's own position is never "in the way".

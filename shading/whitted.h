@@ -22,6 +22,10 @@ struct WhittedSettings {
     int max_depth = 5;               // camera ray = depth 0; no child rays beyond this depth
     float min_contribution = 1e-3f;  // children whose weight falls below this are not traced
     ShadowMode shadows = ShadowMode::Opaque;
+    // Shadow rays from smooth-shaded triangles start on the surface their vertex normals imply
+    // (core/shadow_terminator.h; "render.shadow_terminator": "offset"), or on the flat triangle
+    // ("none": the stair-step terminator of coarse meshes, kept for comparison).
+    bool terminator_offset = true;
 };
 
 class WhittedIntegrator {

@@ -72,6 +72,10 @@ render options:
   --flat-spheres           mesh:N spheres with flat facets instead of smooth normals
   --single-rays            trace camera and shadow rays one by one instead of as coherent
                            Embree streams per tile (same image; for comparisons)
+  --shadow-terminator T    offset (default): shadow rays of smooth-shaded triangles start on
+                           the surface their vertex normals imply (Hanika 2021), or none: on
+                           the flat triangle (stair-step shadows on coarse meshes)
+                           [scene's render.shadow_terminator]
   --aa A                   stratified (spp jittered samples per pixel) or adaptive (corner
                            subdivision, POV-Ray's recursive method; docs/antialiasing.md)
   --aa-threshold X         adaptive: subdivide while corners differ by more than X (sum of
@@ -180,6 +184,7 @@ struct RenderArgs {
     SceneLoadOptions load_options;
     bool flat_spheres = false;
     bool single_rays = false;
+    std::optional<bool> terminator_offset;
     OutputOptions output_options;
     StreamMode stream = StreamMode::Auto;
     bool quiet = false;
@@ -237,6 +242,12 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             }
         } else if (a == "--aa-threshold") {
             r.aa_threshold = static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
+        } else if (a == "--shadow-terminator") {
+            const std::string& m = cursor.value();
+            if (m != "offset" && m != "none") {
+                throw UsageError(a + ": expected 'offset' or 'none', got '" + m + "'");
+            }
+            r.terminator_offset = m == "offset";
         } else if (a == "--aa-depth") {
             r.aa_depth = parse_int(a, cursor.value(), 0, kMaxAdaptiveDepth);
         } else if (a == "--gi") {
@@ -326,6 +337,7 @@ void apply_overrides(const RenderArgs& args, SceneDescription& d) {
     if (args.aa) d.settings.aa = *args.aa;
     if (args.aa_threshold) d.settings.adaptive.threshold = *args.aa_threshold;
     if (args.aa_depth) d.settings.adaptive.depth = *args.aa_depth;
+    if (args.terminator_offset) d.settings.whitted.terminator_offset = *args.terminator_offset;
     if (args.gi) d.settings.gi = *args.gi;
     if (args.gi_view_patches) d.settings.gi_view_patches = true;
 }

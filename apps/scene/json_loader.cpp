@@ -775,12 +775,16 @@ void SceneParser::parse_render(const Json& value, const std::string& pointer,
     require_object(value, pointer, "a render settings object");
     check_keys(value, pointer,
                {"spp", "max_depth", "min_contribution", "tile_size", "sphere_math", "sphere_method",
-                "aa", "aa_threshold", "aa_depth", "shadows", "gi"});
+                "aa", "aa_threshold", "aa_depth", "shadows", "shadow_terminator", "gi"});
     if (const Json* v = find(value, "shadows")) {
         s.whitted.shadows =
             choice(*v, child(pointer, "shadows"), {"opaque", "filtered"}) == "filtered"
                 ? ShadowMode::Filtered
                 : ShadowMode::Opaque;
+    }
+    if (const Json* v = find(value, "shadow_terminator")) {
+        s.whitted.terminator_offset =
+            choice(*v, child(pointer, "shadow_terminator"), {"offset", "none"}) == "offset";
     }
     if (const Json* v = find(value, "spp")) s.spp = integer(*v, child(pointer, "spp"), 1, 1 << 20);
     if (const Json* v = find(value, "gi")) {

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/grid_walk.h"
+#include "core/shadow_terminator.h"
 #include "core/shapes/box.h"
 
 namespace rayo {
@@ -210,7 +211,13 @@ void HeightField::surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) 
         const float length = glm::length(n);
         if (length > 0.0f && std::isfinite(length)) {
             const Vec3 unit = n / length;
-            out.shading_normal = glm::dot(unit, out.geometric_normal) >= 0.0f ? unit : -unit;
+            const float side = glm::dot(unit, out.geometric_normal) >= 0.0f ? 1.0f : -1.0f;
+            out.shading_normal = side * unit;
+            const Vec3 corners[3] = {p0, p1, p2};
+            const Vec3 normals[3] = {side * normal_at(c[0]), side * normal_at(c[1]),
+                                     side * normal_at(c[2])};
+            const float weights[3] = {1.0f - u - v, u, v};
+            out.terminator_offset = terminator_offset(out.position, corners, normals, weights);
         }
     }
     out.object_size = glm::max(glm::length(p1 - p0), glm::length(p2 - p0));

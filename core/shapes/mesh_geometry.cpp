@@ -1,6 +1,7 @@
 #include "core/shapes/mesh_geometry.h"
 
 #include "core/embree_device.h"
+#include "core/shadow_terminator.h"
 
 namespace rayo {
 namespace {
@@ -77,7 +78,14 @@ class MeshBinding : public GeometryBinding {
             if (length > 0.0f) {
                 // Keep the interpolated normal on the geometric normal's side.
                 const Vec3 unit = n / length;
-                out.shading_normal = glm::dot(unit, out.geometric_normal) >= 0.0f ? unit : -unit;
+                const float side = glm::dot(unit, out.geometric_normal) >= 0.0f ? 1.0f : -1.0f;
+                out.shading_normal = side * unit;
+                const Vec3 corners[3] = {mesh.positions[tri[0]], mesh.positions[tri[1]],
+                                         mesh.positions[tri[2]]};
+                const Vec3 normals[3] = {side * mesh.normals[tri[0]], side * mesh.normals[tri[1]],
+                                         side * mesh.normals[tri[2]]};
+                const float weights[3] = {1.0f - u - v, u, v};
+                out.terminator_offset = terminator_offset(out.position, corners, normals, weights);
             }
         }
         const Vec3& p0 = mesh.positions[tri[0]];

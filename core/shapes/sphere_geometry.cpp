@@ -3,6 +3,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/shadow_terminator.h"
 #include "core/shapes/icosphere.h"
 #include "core/user_geometry.h"
 
@@ -90,6 +91,14 @@ class IcosphereBinding : public GeometryBinding {
             const float u = rayhit.hit.u, v = rayhit.hit.v;
             out.shading_normal =
                 glm::normalize((1.0f - u - v) * n0 + u * m_normals[tri[1]] + v * m_normals[tri[2]]);
+            // The icosphere's corners are centre + radius·n_i with the unit n_i as normals.
+            const Sphere& s = m_spheres[sphere];
+            const Vec3 normals[3] = {n0, m_normals[tri[1]], m_normals[tri[2]]};
+            const Vec3 corners[3] = {s.center + s.radius * normals[0],
+                                     s.center + s.radius * normals[1],
+                                     s.center + s.radius * normals[2]};
+            const float weights[3] = {1.0f - u - v, u, v};
+            out.terminator_offset = terminator_offset(out.position, corners, normals, weights);
         }
         out.object_size = m_spheres[sphere].radius;
         out.material = m_spheres[sphere].material;

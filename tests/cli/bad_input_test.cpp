@@ -507,6 +507,8 @@ TEST_F(BadInputCli, FlagValuesCliTestDoesNotCover) {
         {"--width=64", "unknown option '--width=64'"},
         {"--range", "--range: missing value"},
         {"--aa fast", "--aa: expected 'stratified' or 'adaptive', got 'fast'"},
+        {"--shadow-terminator hanika",
+         "--shadow-terminator: expected 'offset' or 'none', got 'hanika'"},
         {"--aa-threshold -0.1", "--aa-threshold: expected a number in [0, 1e+30], got '-0.1'"},
         {"--aa-depth 9", "--aa-depth: expected an integer in [0, 8], got '9'"},
         {"--aa-depth -1", "--aa-depth: expected an integer in [0, 8], got '-1'"},

@@ -440,6 +440,8 @@ INSTANTIATE_TEST_SUITE_P(
                   "scene.json#/fog/colour", "unknown key \"colour\""},
         ErrorCase{"BadShadowMode", R"({"rayo": 1, "render": {"shadows": "soft"}})",
                   "scene.json#/render/shadows", "\"opaque\", \"filtered\""},
+        ErrorCase{"BadShadowTerminator", R"({"rayo": 1, "render": {"shadow_terminator": true}})",
+                  "scene.json#/render/shadow_terminator", "\"offset\", \"none\""},
         ErrorCase{"AreaLightMissingShape",
                   R"({"rayo": 1, "lights": [{"type": "area", "center": [0, 0, 0]}]})",
                   "scene.json#/lights/0/shape", "missing required field \"shape\""},
