@@ -3,7 +3,8 @@
 # convention changed on one side (rayo or POV-Ray) and prints image_compare's numbers
 # (% pixels off, mean relative error, PSNR) against POV-Ray, as scripts/conformance.sh measures.
 # Needs ../shared/spd (or RAYO_SPD_DIR), a build (build/rayo, build/image_compare), povray and
-# python3. Usage: bench/spd_experiments.sh
+# python3. rayo renders with `--shadow-terminator none`, POV-Ray's convention (docs/nff.md), so
+# that each experiment isolates one other convention. Usage: bench/spd_experiments.sh
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 spd="${RAYO_SPD_DIR:-$root/../shared/spd}"
@@ -18,7 +19,8 @@ cd "$out"  # POV-Ray writes only below the current folder or /tmp
 rayo_render() {  # NFF OUT.exr [rayo options...]
   local nff="$1" exr="$2"
   shift 2
-  "$rayo" render "$nff" --width "$size" --height "$size" --quiet -o "$exr" "$@"
+  "$rayo" render "$nff" --width "$size" --height "$size" --quiet --shadow-terminator none \
+    -o "$exr" "$@"
 }
 pov_render() {  # POV OUT.exr (the translation as shipped, frame widened by pov_frame.py)
   python3 "$spd/pov_frame.py" "$size" <"$1" >frame.pov

@@ -73,14 +73,15 @@ echo "conformance counts: $passed passed, $failed failed"
 # ---- images: rayo against POV-Ray -------------------------------------------------------------
 
 # Largest share of pixels (%) that may be off by more than 5 % of the POV-Ray image's mean.
-# Opaque scenes: 2 % (teapot_1 and teapot_2 excepted). The others: the share measured at 256×256
+# Opaque scenes: 2 % (the teapots excepted). The others: the share measured at 256×256
 # (docs/nff.md, "Conformance with POV-Ray") plus 10 %, rounded up to a whole percent.
 declare -A max_off=(
   [balls_1]=2 [balls_2]=2 [balls_3]=2
   [rings_1]=2 [rings_2]=2 [rings_3]=2
   [tetra_1]=2 [tetra_2]=2 [tetra_3]=2
   [tree_1]=2 [tree_2]=2 [tree_3]=2
-  [teapot_1]=11 [teapot_2]=4 [teapot_3]=2  # POV-Ray: two-sided, drops straddling smooth triangles
+  [teapot_1]=15 [teapot_2]=8 [teapot_3]=4  # POV-Ray: two-sided, drops straddling smooth triangles,
+                                           # shadow rays from the flat triangles
   [gears_1]=97 [gears_2]=35                # transmissive: POV-Ray's filter tint, filtered shadows
   [mount_1]=21 [mount_2]=21 [mount_3]=22   # transmissive: filtered shadows, trace depth
 )
