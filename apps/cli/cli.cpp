@@ -43,7 +43,8 @@ constexpr int kMaxSpp = 1 << 16;
 const char* const kUsage = R"(rayo — a Whitted ray tracer (Embree + TBB + OpenImageIO + OpenColorIO)
 
 usage:
-  rayo render [SCENE] [options]   render SCENE (.json or .nff); the built-in scene without one
+  rayo render [SCENE] [options]   render SCENE (.json or .nff, or an .obj, .gltf or .glb model,
+                                  framed automatically); the built-in scene without one
   rayo info SCENE                 load SCENE and print what it contains
   rayo bench accuracy -o DIR [--size N]
                                   the sphere-method study: CSV and charts (gnuplot) in DIR,
@@ -62,6 +63,9 @@ render options:
   --max-depth N            maximum reflection/refraction depth, 0..64 [scene's, default 5]
   --nff-light-intensity X  intensity of each NFF light without a colour, a number >= 0
                            [1/sqrt(number of lights), the SPD's rule; 1 gives unit lights]
+  --view-dir X,Y,Z         model files: the direction from the model's centre to the eye
+                           [0.6,0.45,1: front, right, above; +y is up]
+  --no-ground              model files: no ground square under the model
   --restrict-paths         files the scene references (meshes, material libraries, glTF
                            buffers) must lie in the scene's folder tree (untrusted scenes)
   --tile-size N            tile side in pixels, a multiple of 16 [64]
@@ -149,6 +153,21 @@ double parse_number(const std::string& flag, const std::string& text, double min
         throw UsageError(expected.str());
     }
     return value;
+}
+
+// "X,Y,Z": a direction of three finite numbers, not all zero.
+Vec3 parse_direction(const std::string& flag, const std::string& text) {
+    Vec3 v(0.0f);
+    std::istringstream in(text);
+    char comma1 = 0, comma2 = 0;
+    in >> v.x >> comma1 >> v.y >> comma2 >> v.z;
+    if (!in || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() || !std::isfinite(v.x) ||
+        !std::isfinite(v.y) || !std::isfinite(v.z) || v == Vec3(0.0f)) {
+        throw UsageError(flag +
+                         ": expected a direction X,Y,Z of finite numbers, not all zero, got '" +
+                         text + "'");
+    }
+    return v;
 }
 
 // Walks a command's arguments: `next()` moves to the next one, `cursor.value()` takes the argument
@@ -272,6 +291,10 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
                 static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
         } else if (a == "--restrict-paths") {
             r.load_options.restrict_paths = true;
+        } else if (a == "--view-dir") {
+            r.load_options.model.view_direction = parse_direction(a, cursor.value());
+        } else if (a == "--no-ground") {
+            r.load_options.model.ground = false;
         } else if (a == "--flat-spheres") {
             r.flat_spheres = true;
         } else if (a == "--single-rays") {
@@ -465,6 +488,12 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         if (args.load_options.nff.light_intensity &&
             (!args.scene_path || lower_extension(*args.scene_path) != ".nff")) {
             err << "rayo: warning: --nff-light-intensity applies to NFF scenes only; ignored\n";
+        }
+        const ModelFraming default_framing;
+        if ((args.load_options.model.view_direction ||
+             args.load_options.model.ground != default_framing.ground) &&
+            (!args.scene_path || !is_model_file(*args.scene_path))) {
+            err << "rayo: warning: --view-dir and --no-ground apply to model files only; ignored\n";
         }
     }
     apply_overrides(args, d);
@@ -756,9 +785,34 @@ int run_preview(const std::vector<std::string>& arg_list, std::ostream& out, std
     return 0;
 }
 
+size_t vertex_count(const Scene& scene) {
+    size_t n = 0;
+    for (const TriangleMesh& m : scene.meshes) n += m.positions.size();
+    return n;
+}
+
+// The axis-aligned box of the objects placed directly (instances not included), if any.
+std::optional<Bounds3> direct_bounds(const Scene& scene) {
+    std::optional<Bounds3> box;
+    auto extend = [&](const Bounds3& b) {
+        box = box ? Bounds3{glm::min(box->lower, b.lower), glm::max(box->upper, b.upper)} : b;
+    };
+    scene.shapes.for_each([&](const auto& shapes) {
+        for (const auto& s : shapes) extend(s.bounds());
+    });
+    for (const TriangleMesh& m : scene.meshes) {
+        for (const Vec3& p : m.positions) extend({p, p});
+    }
+    for (const HeightField& h : scene.heightfields) extend(h.bounds());
+    return box;
+}
+
 int run_info(const std::vector<std::string>& args, std::ostream& out) {
     if (args.size() != 1) throw UsageError("info: expected exactly one scene file");
-    const SceneDescription d = load_scene_file(args[0]);
+    // A model file is described as it is: without the ground square that framing adds.
+    SceneLoadOptions options;
+    options.model.ground = false;
+    const SceneDescription d = load_scene_file(args[0], options);
     const Camera camera = Camera::create(d.scene.camera, d.source + "#/camera");
     out << "scene " << d.source << "\n"
         << "resolution " << camera.width() << "x" << camera.height() << "\n"
@@ -766,9 +820,14 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
     for (const auto& [name, count] : d.scene.shape_counts()) out << name << " " << count << "\n";
     out << "meshes " << d.scene.meshes.size() << "\n"
         << "triangles " << d.scene.triangle_count() << "\n"
+        << "vertices " << vertex_count(d.scene) << "\n"
         << "materials " << d.shading.materials.size() << "\n"
         << "lights " << d.shading.lights.size() << "\n"
         << "skipped_triangles " << d.skipped_triangles << "\n";
+    if (const std::optional<Bounds3> box = direct_bounds(d.scene)) {
+        out << "bounds " << box->lower.x << " " << box->lower.y << " " << box->lower.z << "  "
+            << box->upper.x << " " << box->upper.y << " " << box->upper.z << "\n";
+    }
     if (!d.scene.groups.empty()) {
         // Groups' objects are stored once; instanced_objects counts them once per instance.
         out << "groups " << d.scene.groups.size() << "\n"

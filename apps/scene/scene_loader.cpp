@@ -14,8 +14,14 @@ SceneDescription load_scene_file(const std::string& path, const SceneLoadOptions
             path, options.restrict_paths ? FileAccess::confined_to_scene(path) : FileAccess());
     }
     if (extension == ".nff") return load_nff_file(path, nullptr, options.nff);
+    if (is_model_file(path)) {
+        return load_model_scene(
+            path, options.model,
+            options.restrict_paths ? FileAccess::confined_to_scene(path) : FileAccess());
+    }
     throw InputError(path, "unknown scene format '" + extension +
-                               "': expected a .json (rayo) or .nff (Neutral File Format) file");
+                               "': expected a .json (rayo) or .nff (Neutral File Format) scene, "
+                               "or an .obj, .gltf or .glb model");
 }
 
 }  // namespace rayo

@@ -1,8 +1,10 @@
 #pragma once
-// Loads a scene file by its extension: .json (native format) or .nff (Standard Procedural
-// Databases). Errors are InputErrors naming the file and place.
+// Loads a scene file by its extension: .json (native format), .nff (Standard Procedural
+// Databases), or a model file (.obj, .gltf, .glb) framed as apps/scene/model_scene.h says.
+// Errors are InputErrors naming the file and place.
 #include <string>
 
+#include "apps/scene/model_scene.h"
 #include "apps/scene/nff_loader.h"
 #include "apps/scene/scene_description.h"
 
@@ -14,6 +16,7 @@ struct SceneLoadOptions {
     // Confine every file the scene references to the scene file's directory tree
     // (`--restrict-paths`; docs/limits.md, "Trust model").
     bool restrict_paths = false;
+    ModelFraming model;
 };
 
 SceneDescription load_scene_file(const std::string& path, const SceneLoadOptions& options = {});

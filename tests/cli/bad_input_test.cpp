@@ -507,6 +507,11 @@ TEST_F(BadInputCli, FlagValuesCliTestDoesNotCover) {
         {"--width=64", "unknown option '--width=64'"},
         {"--range", "--range: missing value"},
         {"--aa fast", "--aa: expected 'stratified' or 'adaptive', got 'fast'"},
+        {"--view-dir 0,0,0",
+         "--view-dir: expected a direction X,Y,Z of finite numbers, not all zero, got '0,0,0'"},
+        {"--view-dir 1,2",
+         "--view-dir: expected a direction X,Y,Z of finite numbers, not all zero, "
+         "got '1,2'"},
         {"--shadow-terminator hanika",
          "--shadow-terminator: expected 'offset' or 'none', got 'hanika'"},
         {"--aa-threshold -0.1", "--aa-threshold: expected a number in [0, 1e+30], got '-0.1'"},

@@ -145,6 +145,39 @@ TEST_F(CliTest, UnknownSceneExtension) {
     EXPECT_EQ(count_files_except("scene.txt"), 0);
 }
 
+// A tetrahedron model with its material library.
+const char* const kTetraObj =
+    "mtllib tetra.mtl\nusemtl red\nv 0 0 0\nv 2 0 0\nv 0 2 0\nv 0 0 2\n"
+    "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+const char* const kTetraMtl = "newmtl red\nKd 0.9 0.1 0.1\n";
+
+TEST_F(CliTest, ModelFileRendersFramedWithNoSceneFile) {
+    write("tetra.obj", kTetraObj);
+    write("tetra.mtl", kTetraMtl);
+    const CommandResult r = run("render tetra.obj --width 64 -o tetra.exr");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    // The model is in the picture: its red material lights pixels near the image centre
+    // (and the centre itself shows the model, not the ground or the background).
+    const std::vector<float> rgba = read_pixels("tetra.exr");
+    ASSERT_EQ(rgba.size(), 64u * 48u * 4u);
+    const size_t centre = (24u * 64u + 32u) * 4u;
+    EXPECT_GT(rgba[centre], 2.0f * rgba[centre + 1])
+        << "R " << rgba[centre] << " G " << rgba[centre + 1];
+
+    const CommandResult info = run("info tetra.obj");
+    ASSERT_EQ(info.exit_code, 0) << info.output;
+    EXPECT_NE(info.output.find("triangles 4\n"), std::string::npos) << info.output;
+    EXPECT_NE(info.output.find("vertices 4\n"), std::string::npos) << info.output;
+    EXPECT_NE(info.output.find("bounds 0 0 0  2 2 2\n"), std::string::npos) << info.output;
+    EXPECT_NE(info.output.find("lights 2\n"), std::string::npos) << info.output;
+
+    // Framing flags are for model files: a warning elsewhere.
+    write("scene.nff", kSmallNff);
+    const CommandResult warned = run("render scene.nff --no-ground --width 16 -o s.png");
+    EXPECT_EQ(warned.exit_code, 0) << warned.output;
+    EXPECT_NE(warned.output.find("apply to model files only"), std::string::npos) << warned.output;
+}
+
 TEST_F(CliTest, UnwritableOutputLeavesNothing) {
     write("scene.nff", kSmallNff);
     CommandResult r = run("render scene.nff -o no/such/dir/x.png");
