@@ -1541,6 +1541,7 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
             compute_vertex_normals(mesh);
         }
     }
+    out.warnings.insert(out.warnings.end(), stats.warnings.begin(), stats.warnings.end());
     if (stats.degenerate_triangles > 0) {  // dropped, not refused: reported by the CLI
         out.warnings.push_back(where + ": dropped " + std::to_string(stats.degenerate_triangles) +
                                " degenerate (zero-area) triangle(s) of '" + path + "'");

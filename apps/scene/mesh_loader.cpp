@@ -241,7 +241,8 @@ void check_obj_text(const std::string& obj_text, const std::string& path) {
 
 // tinyobjloader's `mtllib` reader, through read_input_file: a library must be a regular file of
 // sane size that `access` allows (its own reader would read /dev/zero until memory runs out).
-// A missing library stays tinyobjloader's "not found" warning, which load_obj turns into an error.
+// A missing library is recorded in `missing` (load_obj warns about it; tinyobjloader's own
+// warning is left out, so that its unknown-name warnings are told apart).
 class MaterialLibraryReader : public tinyobj::MaterialReader {
   public:
     MaterialLibraryReader(const std::string& obj_path, const FileAccess& access)
@@ -251,8 +252,7 @@ class MaterialLibraryReader : public tinyobj::MaterialReader {
                     std::string* err) override {
         const std::string path = join_path(m_dir, name);
         if (::access(path.c_str(), F_OK) != 0) {
-            if (warn)
-                *warn += "Material file [ " + name + " ] not found in a path : " + m_dir + "\n";
+            missing.push_back(name);
             return false;
         }
         std::istringstream text(
@@ -260,6 +260,8 @@ class MaterialLibraryReader : public tinyobj::MaterialReader {
         tinyobj::LoadMtl(names, materials, &text, warn, err);
         return true;
     }
+
+    std::vector<std::string> missing;  // libraries named by `mtllib` that do not exist
 
   private:
     std::string m_obj_path;
@@ -298,10 +300,18 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
         throw InputError(obj_place(path, message),
                          "malformed OBJ: " + (message.empty() ? "cannot parse" : message));
     }
-    // A missing material library or an unknown `usemtl` name is only a warning for
-    // tinyobjloader; for a renderer it silently changes the picture, so it is an error here.
-    if (warn.find("not found") != std::string::npos ||
-        warn.find("Failed to load material") != std::string::npos) {
+    // A missing material library is a warning (assets often travel without theirs): its faces
+    // take the default material. With every library present, an unknown `usemtl` name is an
+    // error: it would silently change the picture.
+    for (const std::string& name : mtl_reader.missing) {
+        if (stats) {
+            stats->warnings.push_back(path + ": material library '" + name + "' not found in " +
+                                      parent_directory(path) +
+                                      "; its materials are replaced by the default material");
+        }
+    }
+    if (mtl_reader.missing.empty() && (warn.find("not found") != std::string::npos ||
+                                       warn.find("Failed to load material") != std::string::npos)) {
         const std::string message = one_line(warn);
         throw InputError(obj_place(path, message), "OBJ materials: " + message);
     }

@@ -15,8 +15,9 @@ namespace rayo {
 
 // What an import did besides building the mesh.
 struct MeshImportStats {
-    size_t degenerate_triangles = 0;  // zero-area triangles dropped (not an error)
-    size_t file_materials = 0;        // materials appended from the file
+    size_t degenerate_triangles = 0;    // zero-area triangles dropped (not an error)
+    size_t file_materials = 0;          // materials appended from the file
+    std::vector<std::string> warnings;  // "path: what" for input used with a default
 };
 
 // Both loaders append the file's materials to `materials` and give every triangle the index

@@ -60,6 +60,7 @@ SceneDescription load_model_scene(const std::string& path, const ModelFraming& f
     TriangleMesh mesh = lower_extension(path) == ".obj"
                             ? load_obj(path, d.shading.materials, path, &stats, access)
                             : load_gltf(path, d.shading.materials, path, &stats, access);
+    d.warnings = stats.warnings;
     stats.degenerate_triangles += drop_degenerate_triangles(mesh);
     if (mesh.triangles.empty()) {
         throw InputError(path, "the model has no non-degenerate triangles");

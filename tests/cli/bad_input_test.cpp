@@ -396,8 +396,6 @@ TEST_F(BadInputObj, DegenerateFacesAndMissingMaterials) {
         {"two-vertex face", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n", "m.obj:4", "at least 3 vertices"},
         {"only collinear faces", "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n",
          "scene.json#/objects/0/file", "no (non-degenerate) triangles"},
-        {"missing material library", "mtllib none.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
-         "m.obj", "none.mtl"},
         {"unknown material", "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl nope\nf 1 2 3\n", "m.obj",
          "'nope'"},
     };

@@ -171,6 +171,15 @@ TEST_F(CliTest, ModelFileRendersFramedWithNoSceneFile) {
     EXPECT_NE(info.output.find("bounds 0 0 0  2 2 2\n"), std::string::npos) << info.output;
     EXPECT_NE(info.output.find("lights 2\n"), std::string::npos) << info.output;
 
+    // Without its material library the model still renders, in the default material, with
+    // a warning that names the library.
+    fs::remove(m_dir / "tetra.mtl");
+    const CommandResult bare = run("render tetra.obj --width 32 -o bare.png");
+    EXPECT_EQ(bare.exit_code, 0) << bare.output;
+    EXPECT_NE(bare.output.find("warning: "), std::string::npos) << bare.output;
+    EXPECT_NE(bare.output.find("material library 'tetra.mtl' not found"), std::string::npos)
+        << bare.output;
+
     // Framing flags are for model files: a warning elsewhere.
     write("scene.nff", kSmallNff);
     const CommandResult warned = run("render scene.nff --no-ground --width 16 -o s.png");

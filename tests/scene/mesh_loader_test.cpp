@@ -164,14 +164,19 @@ TEST(MeshLoaderObj, ZeroFaceIndexGivesFileAndLine) {
     EXPECT_EQ(error.where(), path + ":4");
 }
 
-TEST(MeshLoaderObj, MissingMaterialLibraryIsAnError) {
+TEST(MeshLoaderObj, MissingMaterialLibraryIsAWarningWithTheDefaultMaterial) {
     TempDir dir;
     const std::string path =
-        dir.write("nomtl.obj", "mtllib gone.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        dir.write("nomtl.obj", "mtllib gone.mtl\nusemtl red\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     std::vector<Material> materials;
-    const InputError error = expect_input_error([&] { load_obj(path, materials, "here"); });
-    EXPECT_EQ(error.where().rfind(path, 0), 0u) << error.where();
-    EXPECT_NE(error.message().find("gone.mtl"), std::string::npos) << error.message();
+    MeshImportStats stats;
+    const TriangleMesh mesh = load_obj(path, materials, "here", &stats);
+    ASSERT_EQ(mesh.triangle_count(), 1u);
+    EXPECT_EQ(materials[mesh.materials[0]].name, "default");
+    ASSERT_EQ(stats.warnings.size(), 1u);
+    EXPECT_EQ(stats.warnings[0].rfind(path + ": material library 'gone.mtl' not found", 0), 0u)
+        << stats.warnings[0];
+    EXPECT_EQ(stats.warnings[0].find("Use default material"), std::string::npos);
 }
 
 // How many times `f` opens the file at `path`, counted with inotify (Linux): IN_OPEN events on
