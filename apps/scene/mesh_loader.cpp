@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <nlohmann/json.hpp>
 #include <limits>
 #include <map>
 #include <optional>
@@ -732,6 +733,34 @@ bool gltf_refuse_write(std::string* err, const std::string&, const std::vector<u
     return false;
 }
 
+// The JSON of a .gltf file, or of a .glb's first chunk (the glTF 2.0 binary layout: a 12-byte
+// header, then the chunk's length and type "JSON"); empty when there is none.
+std::string gltf_json_text(const std::string& bytes, bool binary) {
+    if (!binary) return bytes;
+    if (bytes.size() < 20 || std::memcmp(bytes.data() + 16, "JSON", 4) != 0) return {};
+    uint32_t length = 0;
+    std::memcpy(&length, bytes.data() + 12, 4);  // little-endian, as the format and x86 are
+    return length <= bytes.size() - 20 ? bytes.substr(20, length) : std::string();
+}
+
+// A glTF loader must refuse a file whose `extensionsRequired` names an extension it does not
+// implement (glTF 2.0 specification, 3.12). rayo implements none of them yet; Draco-compressed
+// meshes (KHR_draco_mesh_compression) are the common case.
+void refuse_required_extensions(const std::string& json_text, const std::string& path) {
+    const nlohmann::json root =
+        nlohmann::json::parse(json_text, nullptr, /*allow_exceptions=*/false);
+    if (!root.is_object()) return;  // tinygltf reports the malformed file
+    const auto required = root.find("extensionsRequired");
+    if (required == root.end() || !required->is_array() || required->empty()) return;
+    std::string names;
+    for (const auto& name : *required) {
+        names += (names.empty() ? "" : ", ") +
+                 (name.is_string() ? name.get<std::string>() : name.dump());
+    }
+    throw InputError(path, "the file requires glTF extension(s) " + names +
+                               ", which rayo does not support (it supports no required extension)");
+}
+
 }  // namespace
 
 TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials,
@@ -745,6 +774,7 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
     tinygltf::Model model;
     std::string err, warn;
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    refuse_required_extensions(gltf_json_text(bytes, binary), path);
     const auto size = static_cast<unsigned int>(bytes.size());  // < kMaxMeshFileBytes
     const std::string dir = parent_directory(path);
     const bool ok =

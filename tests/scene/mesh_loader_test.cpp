@@ -396,6 +396,32 @@ TEST(MeshLoaderGltf, BinaryGlbWithUnsignedByteIndices) {
     expect_vec3(mesh.positions[1], 1, 0, 0);
 }
 
+TEST(MeshLoaderGltf, RequiredExtensionsAreNamedAndRefused) {
+    // A Draco-compressed file (its accessors have no bufferView, so tinygltf alone reports
+    // "invalid bufferView"), as .gltf and as .glb; a used-but-not-required extension is fine.
+    for (const bool binary : {false, true}) {
+        TempDir dir;
+        GltfAsset a = make_gltf(5123);
+        a.doc["extensionsUsed"] = {"KHR_draco_mesh_compression", "KHR_materials_ior"};
+        a.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+        a.doc["accessors"][0].erase("bufferView");
+        const std::string path =
+            binary ? write_glb(dir, "draco.glb", a) : write_embedded(dir, "draco.gltf", a);
+        std::vector<Material> materials;
+        const InputError error = expect_input_error([&] { load_gltf(path, materials, "here"); });
+        EXPECT_EQ(error.where(), path);
+        EXPECT_NE(error.message().find("KHR_draco_mesh_compression"), std::string::npos)
+            << error.message();
+        EXPECT_NE(error.message().find("does not support"), std::string::npos) << error.message();
+    }
+    TempDir dir;
+    GltfAsset used = make_gltf(5123);
+    used.doc["extensionsUsed"] = {"KHR_materials_ior"};
+    const std::string path = write_embedded(dir, "used.gltf", used);
+    std::vector<Material> materials;
+    EXPECT_EQ(load_gltf(path, materials, "here").triangle_count(), 2u);
+}
+
 TEST(MeshLoaderGltf, ExternalBinWithUnsignedIntIndices) {
     TempDir dir;
     GltfAsset a = make_gltf(5125);
