@@ -14,9 +14,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <nlohmann/json.hpp>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <regex>
 #include <set>
@@ -437,14 +437,37 @@ Material material_from_gltf(const tinygltf::Material& m, size_t index, const std
                     static_cast<float>(pbr.baseColorFactor[2]));
     const auto metallic = static_cast<float>(pbr.metallicFactor);
     const double roughness = pbr.roughnessFactor;
-    out.kd = base;
+    // The metallic workflow (glTF 2.0 specification, Appendix B): the specular colour at normal
+    // incidence is F0 = mix(0.04, baseColor, metallic) and only the dielectric part diffuses,
+    // kd = (1 − metallic)·baseColor. F0 colours the Phong highlight, whose exponent matches a
+    // GGX/Beckmann roughness α = r²: n = 2/α² − 2. A perfect mirror only approximates a smooth
+    // surface, so its weight fades with roughness: reflect = F0·(1 − r)² (docs/scene-format.md).
+    const Vec3 f0 = glm::mix(Vec3(0.04f), base, metallic);
+    out.kd = (1.0f - metallic) * base;
     out.ka = 0.1f * base;
-    out.ks = Vec3(0.04f + metallic);  // dielectric F0 ≈ 0.04, metals reflect more
-    out.reflect = metallic * base;
-    // Blinn-Phong exponent matching a GGX/Beckmann roughness α = r²: n = 2/α² − 2.
+    out.ks = f0;
+    const auto gloss = static_cast<float>((1.0 - roughness) * (1.0 - roughness));
+    out.reflect = gloss * f0;
     const double r4 = roughness * roughness * roughness * roughness;
     const double exponent = r4 > 0.0 ? 2.0 / r4 - 2.0 : 10000.0;
     out.shininess = static_cast<float>(std::clamp(exponent, 1.0, 10000.0));
+    // emissiveFactor (× KHR_materials_emissive_strength) is the radiance the surface sends.
+    if (m.emissiveFactor.size() == 3) {
+        double strength = 1.0;
+        const auto ext = m.extensions.find("KHR_materials_emissive_strength");
+        if (ext != m.extensions.end() && ext->second.Has("emissiveStrength")) {
+            strength = ext->second.Get("emissiveStrength").GetNumberAsDouble();
+        }
+        for (int i = 0; i < 3; ++i) {
+            const double e = m.emissiveFactor[static_cast<size_t>(i)] * strength;
+            if (!within_scene_magnitude(e) || e < 0.0) {
+                throw InputError(where, what +
+                                            "emissiveFactor × emissiveStrength must be finite "
+                                            "and >= 0");
+            }
+            out.emission[i] = static_cast<float>(e);
+        }
+    }
     return out;
 }
 

@@ -366,11 +366,13 @@ TEST(MeshLoaderGltf, EmbeddedBufferWithPbrMaterial) {
     ASSERT_EQ(materials.size(), 2u);
     const Material& m = materials[1];
     EXPECT_EQ(m.name, "metal");
-    expect_vec3(m.kd, 0.5f, 0.25f, 1.0f);
+    // metallic 0.5, roughness 0.5: F0 = mix(0.04, base, 0.5), kd = 0.5·base, reflect = F0/4.
+    expect_vec3(m.kd, 0.25f, 0.125f, 0.5f);
     expect_vec3(m.ka, 0.05f, 0.025f, 0.1f);
-    expect_vec3(m.ks, 0.54f, 0.54f, 0.54f);       // 0.04 + metallic
-    expect_vec3(m.reflect, 0.25f, 0.125f, 0.5f);  // metallic × base colour
-    EXPECT_FLOAT_EQ(m.shininess, 30.0f);          // 2/0.5⁴ − 2
+    expect_vec3(m.ks, 0.27f, 0.145f, 0.52f);
+    expect_vec3(m.reflect, 0.0675f, 0.03625f, 0.13f);
+    EXPECT_FLOAT_EQ(m.shininess, 30.0f);  // 2/0.5⁴ − 2
+    expect_vec3(m.emission, 0, 0, 0);
 }
 
 TEST(MeshLoaderGltf, RoughnessExtremesClampShininess) {
@@ -384,6 +386,51 @@ TEST(MeshLoaderGltf, RoughnessExtremesClampShininess) {
         load_gltf(path, materials, "here");
         EXPECT_FLOAT_EQ(materials.at(0).shininess, expected) << "roughness " << roughness;
     }
+}
+
+TEST(MeshLoaderGltf, MetalsDoNotDiffuseDielectricsKeepTheirColourRoughMirrorsFade) {
+    struct Case {
+        double metallic, roughness;
+        Vec3 kd, ks, reflect;
+    };
+    const Vec3 base(0.5f, 0.25f, 1.0f);
+    const Case cases[] = {
+        {1.0, 0.0, Vec3(0.0f), base, base},          // a polished metal: a mirror
+        {1.0, 1.0, Vec3(0.0f), base, Vec3(0.0f)},    // a rough metal: no mirror
+        {0.0, 0.0, base, Vec3(0.04f), Vec3(0.04f)},  // glossy plastic
+        {0.0, 0.5, base, Vec3(0.04f), Vec3(0.01f)},  // satin plastic
+    };
+    for (const Case& c : cases) {
+        TempDir dir;
+        GltfAsset a = make_gltf(5123);
+        a.doc["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = c.metallic;
+        a.doc["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = c.roughness;
+        const std::string path = write_embedded(dir, "m.gltf", a);
+        std::vector<Material> materials;
+        load_gltf(path, materials, "here");
+        const Material& m = materials.at(0);
+        SCOPED_TRACE("metallic " + std::to_string(c.metallic) + " roughness " +
+                     std::to_string(c.roughness));
+        expect_vec3(m.kd, c.kd.x, c.kd.y, c.kd.z);
+        expect_vec3(m.ks, c.ks.x, c.ks.y, c.ks.z);
+        expect_vec3(m.reflect, c.reflect.x, c.reflect.y, c.reflect.z);
+    }
+}
+
+TEST(MeshLoaderGltf, EmissionFromFactorAndStrength) {
+    TempDir dir;
+    GltfAsset a = make_gltf(5123);
+    a.doc["materials"][0]["emissiveFactor"] = {1.0, 0.5, 0.25};
+    a.doc["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] =
+        4.0;
+    const std::string path = write_embedded(dir, "e.gltf", a);
+    std::vector<Material> materials;
+    load_gltf(path, materials, "here");
+    expect_vec3(materials.at(0).emission, 4.0f, 2.0f, 1.0f);
+    a.doc["materials"][0]["emissiveFactor"] = {1.0, -0.5, 0.25};
+    const std::string bad = write_embedded(dir, "bad.gltf", a);
+    const InputError error = expect_input_error([&] { load_gltf(bad, materials, "here"); });
+    EXPECT_NE(error.message().find("emissiveFactor"), std::string::npos) << error.message();
 }
 
 TEST(MeshLoaderGltf, BinaryGlbWithUnsignedByteIndices) {
