@@ -279,7 +279,7 @@ void write_suite_files(const SuiteOptions& options, const std::vector<SuiteRow>&
        << "set style data histograms\nset style histogram clustered gap 1\n"
        << "set style fill solid 0.8 border -1\nset boxwidth 0.9\nset grid y\n"
        << "set ylabel 'seconds'\nset y2label 'Mrays/s'\nset ytics nomirror\nset y2tics\n"
-       << "set yrange [0:*]\nset y2range [0:*]\nset key top left\n"
+       << "set yrange [0:*]\nset y2range [0:*]\nset key outside bottom center horizontal\n"
        << "plot '" << csv_path << "' skip 1 using 12:xtic(1) title 'BVH build', "
        << "'' skip 1 using 13 title 'render', "
        << (pov ? "'' skip 1 using 20 title 'POV-Ray (whole run)', " : "")
