@@ -1,5 +1,6 @@
 #include "bench/lab/spd_scenes.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -7,6 +8,7 @@
 #include <glm/vec3.hpp>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 #include "apps/scene/nff_loader.h"
 #include "bench/lab/teapot_patches.h"
@@ -70,10 +72,10 @@ std::vector<D3> square(const D3& centre, const D3& a, const D3& b, double half) 
 
 // ---- balls: the sphereflake ------------------------------------------------------------------
 // A sphere carries nine spheres of a third of its radius touching it: in the frame where its
-// axis is +z, three around the upper cap (elevation asin √(2/3), the directions of a
-// tetrahedron's faces) at azimuths 45°, 165°, 285°, each followed by two on the equator 30°
-// either side of it... (15°, 75°; 135°, 195°; 255°, 315°). The frame of a child is the rotation
-// taking +z to its direction by the shortest arc (about −z: the half turn about y).
+// axis is +z, three around the upper cap (elevation asin √(2/3) = 54.7°, the direction
+// (1, 1, 2)/√6) at azimuths 45°, 165°, 285°, each followed by two on the equator 30° either side
+// of it (15°, 75°; 135°, 195°; 255°, 315°). The frame of a child is the rotation taking +z to
+// its direction by the shortest arc (about −z: the half turn about y).
 D3 rotate_from_z(const D3& axis, const D3& v) {
     const double c = axis.z;
     const D3 k = glm::cross(D3(0, 0, 1), axis);

@@ -202,8 +202,8 @@ void print_suite_table(std::ostream& out, const std::vector<SuiteRow>& rows,
         for (size_t c = 0; c < cells.size(); ++c) widths[c] = std::max(widths[c], cells[c].size());
     }
     const std::string width_text = rows.empty() ? "?" : std::to_string(rows.front().width);
-    out << (markdown ? "" : "") << "machine: " << machine.cpu << ", " << machine.cores << " cores, "
-        << machine.isa << "; images " << width_text << "x" << width_text << ", 1 spp"
+    out << "machine: " << machine.cpu << ", " << machine.cores << " cores, " << machine.isa
+        << "; images " << width_text << "x" << width_text << ", 1 spp"
         << (markdown ? "\n\n" : "\n");
     for (size_t row = 0; row < table.size(); ++row) {
         const auto& cells = table[row];
