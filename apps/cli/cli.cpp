@@ -25,6 +25,7 @@
 #include "apps/scene/renderer.h"
 #include "apps/scene/scene_loader.h"
 #include "bench/lab/accuracy_bench.h"
+#include "bench/lab/spd_suite.h"
 #include "core/error.h"
 #include "core/image/image_output.h"
 #include "core/image/tile_stream.h"
@@ -49,6 +50,8 @@ usage:
   rayo bench accuracy -o DIR [--size N]
                                   the sphere-method study: CSV and charts (gnuplot) in DIR,
                                   scenes of N×N pixels [384]
+  rayo bench suite [options]      the seven SPD scenes as a benchmark: a table, and with -o DIR
+                                  suite.csv/.json/.md and a chart (docs/performance.md)
   rayo texture NAME [options]     write a procedural texture flat (the plane z = 0)
   rayo preview [SCENE] [options]  draw every object's outline from SCENE's camera, in well
                                   under a second: framing before a long render
@@ -99,6 +102,16 @@ render options:
                            docs/high-resolution.md]
   --quiet                  no progress bar and no summary line
   --stats                  print the full statistics table
+
+bench suite options:
+  -o, --output DIR         write the files there (and --povray's scenes and logs)
+  --size N                 SPD size of every scene [3]
+  --width W                images of W×W pixels [512]
+  --threads N              worker threads [all cores]
+  --scenes A,B             only these of balls,gears,mount,rings,teapot,tetra,tree
+  --povray                 also time POV-Ray 3.7 on the same scenes (its files in DIR, or
+                           in a temporary folder without -o)
+  --write-nff              write DIR/NAME_SIZE.nff for each scene instead of rendering
 
 texture NAME is one of (docs/textures.md):
   @TEXTURE_KINDS@
@@ -838,9 +851,53 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
     return 0;
 }
 
+int run_bench_suite(const std::vector<std::string>& args, std::ostream& out) {
+    SuiteOptions options;
+    bool write_nff = false;
+    ArgCursor cursor(args);
+    cursor.next();  // "suite"
+    while (cursor.next()) {
+        const std::string& a = cursor.current();
+        if (a == "-o" || a == "--output") {
+            options.dir = cursor.value();
+        } else if (a == "--size") {
+            options.size = parse_int(a, cursor.value(), 1, 64);
+        } else if (a == "--width") {
+            options.width = parse_int(a, cursor.value(), 2, 16384);
+        } else if (a == "--threads") {
+            options.threads = parse_int(a, cursor.value(), 1, 4096);
+        } else if (a == "--scenes") {
+            std::istringstream list(cursor.value());
+            for (std::string name; std::getline(list, name, ',');) options.only.push_back(name);
+        } else if (a == "--povray") {
+            options.povray = true;
+        } else if (a == "--write-nff") {
+            write_nff = true;
+        } else {
+            throw UsageError("bench suite: unknown option '" + a + "'");
+        }
+    }
+    if (write_nff && options.dir.empty()) throw UsageError("bench suite: --write-nff needs -o DIR");
+    if (write_nff) {
+        write_spd_nff_files(options, out);
+        return 0;
+    }
+    const std::vector<SuiteRow> rows = run_spd_suite(options, out);
+    const MachineInfo machine = machine_info();
+    print_suite_table(out, rows, machine, false);
+    if (!options.dir.empty()) {
+        write_suite_files(options, rows, machine);
+        out << "wrote suite.csv, suite.json, suite.md, suite.gp and suite.png in " << options.dir
+            << "\n";
+    }
+    return 0;
+}
+
 int run_bench(const std::vector<std::string>& args, std::ostream& out) {
+    if (!args.empty() && args[0] == "suite") return run_bench_suite(args, out);
     if (args.empty() || args[0] != "accuracy") {
-        throw UsageError("bench: expected 'rayo bench accuracy -o DIR [--size N]'");
+        throw UsageError(
+            "bench: expected 'rayo bench accuracy -o DIR [--size N]' or 'rayo bench suite'");
     }
     std::optional<std::string> dir;
     int size = kAccuracyImageSize;
