@@ -18,7 +18,9 @@ struct SurfaceHit {
     // Smooth-shaded triangles: from `position` to where shadow rays leaving the geometric
     // normal's side start (core/shadow_terminator.h); zero for every other surface.
     Vec3 terminator_offset{0.0f};
-    float object_size = 0.0f;     // radius or extent: scales the spawned-ray offset
+    // The mesh's interpolated vertex colour (TriangleMesh::colors); 1 for every other surface.
+    Vec3 vertex_color{1.0f};
+    float object_size = 0.0f;  // radius or extent: scales the spawned-ray offset
     uint32_t material = 0;
     uint32_t shape = 0;      // the shape type: its index in AnalyticShapes, or kTriangleShape
     uint32_t primitive = 0;  // index of the shape within its type, or of the triangle in its mesh

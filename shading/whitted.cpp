@@ -85,6 +85,13 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(
                                    p.facing_geometric);
         }
     }
+    if (hit.vertex_color != Vec3(1.0f)) {
+        // Vertex colours multiply the (textured) diffuse and ambient colours.
+        SurfaceCoefficients coloured = p.material();
+        coloured.kd *= hit.vertex_color;
+        coloured.ka *= hit.vertex_color;
+        p.textured = coloured;
+    }
     p.to_eye = -ray.direction;
     p.shadow_origin = offset_ray_origin(hit, p.facing_geometric);
     if (m_radiosity && p.entering) p.radiosity = m_radiosity->reflected(hit, p.radiosity_reflected);

@@ -270,6 +270,13 @@ class MaterialLibraryReader : public tinyobj::MaterialReader {
     const FileAccess& m_access;
 };
 
+// The colour of OBJ vertex v (the `v x y z r g b` extension): finite and >= 0.
+Vec3 obj_vertex_color(const tinyobj::attrib_t& attrib, size_t v, const std::string& path) {
+    const Vec3 c(attrib.colors[3 * v], attrib.colors[3 * v + 1], attrib.colors[3 * v + 2]);
+    require_colour(c, path, "vertex " + std::to_string(v + 1) + " colour (r g b)");
+    return c;
+}
+
 }  // namespace
 
 uint32_t default_material_index(std::vector<Material>& materials) {
@@ -295,7 +302,8 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
     std::istringstream stream(text);
     MaterialLibraryReader mtl_reader(path, access);
     const bool ok = tinyobj::LoadObj(&attrib, &shapes, &file_materials, &warn, &err, &stream,
-                                     &mtl_reader, /*triangulate=*/true);
+                                     &mtl_reader, /*triangulate=*/true,
+                                     /*default_vcols_fallback=*/false);
     if (!ok || !err.empty()) {
         const std::string message = one_line(err.empty() ? warn : err);
         throw InputError(obj_place(path, message),
@@ -377,6 +385,9 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
                             n = (std::isfinite(length) && length > 0.0f) ? n / length : Vec3(0.0f);
                         }
                         mesh.normals.push_back(n);
+                    }
+                    if (!attrib.colors.empty()) {
+                        mesh.colors.push_back(obj_vertex_color(attrib, v, path));
                     }
                     found =
                         vertex_ids.emplace(key, static_cast<uint32_t>(mesh.positions.size() - 1))
@@ -546,6 +557,42 @@ std::vector<Vec3> read_vec3(const tinygltf::Model& model, int accessor, const st
     return out;
 }
 
+// COLOR_0: VEC3 or VEC4 (alpha ignored) of floats, or of normalized unsigned bytes or shorts
+// (glTF 2.0, "Meshes": the colours are linear).
+std::vector<Vec3> read_colors(const tinygltf::Model& model, int accessor, const std::string& path,
+                              const std::string& what) {
+    const bool exists = accessor >= 0 && static_cast<size_t>(accessor) < model.accessors.size();
+    const int type = exists ? model.accessors[static_cast<size_t>(accessor)].type : -1;
+    const int component =
+        exists ? model.accessors[static_cast<size_t>(accessor)].componentType : -1;
+    if (exists && type != TINYGLTF_TYPE_VEC3 && type != TINYGLTF_TYPE_VEC4) {
+        throw InputError(path, what + ": expected VEC3 or VEC4 colours");
+    }
+    if (exists && component != TINYGLTF_COMPONENT_TYPE_FLOAT &&
+        component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+        throw InputError(path, what + ": expected float, unsigned byte or unsigned short colours");
+    }
+    const AccessorView view = view_accessor(model, accessor, component, type, path, what);
+    std::vector<Vec3> out(view.count);
+    for (size_t i = 0; i < view.count; ++i) {
+        const unsigned char* element = view.data + i * view.stride;
+        for (int k = 0; k < 3; ++k) {
+            if (component == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+                std::memcpy(&out[i][k], element + 4 * k, 4);
+            } else if (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+                out[i][k] = static_cast<float>(element[k]) / 255.0f;
+            } else {
+                uint16_t value;
+                std::memcpy(&value, element + 2 * k, 2);
+                out[i][k] = static_cast<float>(value) / 65535.0f;
+            }
+        }
+        require_colour(out[i], path, what + ": element " + std::to_string(i));
+    }
+    return out;
+}
+
 std::vector<uint32_t> read_indices(const tinygltf::Model& model, int accessor,
                                    const std::string& path, const std::string& what) {
     const AccessorView view = view_accessor(model, accessor, -1, TINYGLTF_TYPE_SCALAR, path, what);
@@ -605,6 +652,7 @@ struct GltfBuilder {
     uint32_t first_material;
     TriangleMesh mesh;
     bool any_normals = false;
+    bool any_colors = false;
 
     void append_primitive(const tinygltf::Primitive& primitive, const glm::dmat4& world,
                           const std::string& what) {
@@ -628,6 +676,13 @@ struct GltfBuilder {
             for (auto& n : piece.normals) {
                 const float length = glm::length(n);
                 n = length > 0.0f ? n / length : Vec3(0.0f);
+            }
+        }
+        const auto color = primitive.attributes.find("COLOR_0");
+        if (color != primitive.attributes.end()) {
+            piece.colors = read_colors(model, color->second, path, what + " COLOR_0");
+            if (piece.colors.size() != piece.positions.size()) {
+                throw InputError(path, what + ": COLOR_0 and POSITION counts differ");
             }
         }
         std::vector<uint32_t> indices;
@@ -672,7 +727,18 @@ struct GltfBuilder {
             mesh.normals.assign(mesh.positions.size(), Vec3(0.0f));  // zero: shade with Ng
             any_normals = true;
         }
+        if (!piece.colors.empty() && !any_colors) {
+            mesh.colors.assign(mesh.positions.size(), Vec3(1.0f));  // white: no colour so far
+            any_colors = true;
+        }
         mesh.positions.insert(mesh.positions.end(), piece.positions.begin(), piece.positions.end());
+        if (any_colors) {
+            if (piece.colors.empty()) {
+                mesh.colors.resize(mesh.positions.size(), Vec3(1.0f));
+            } else {
+                mesh.colors.insert(mesh.colors.end(), piece.colors.begin(), piece.colors.end());
+            }
+        }
         if (any_normals) {
             if (piece_normals) {
                 mesh.normals.insert(mesh.normals.end(), piece.normals.begin(), piece.normals.end());

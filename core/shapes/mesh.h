@@ -15,6 +15,9 @@ struct TriangleMesh {
     std::string name;
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;  // empty, or one per position
+    // Empty, or one linear RGB colour per position that multiplies the material's kd and ka
+    // (glTF COLOR_0, OBJ `v x y z r g b`), interpolated across each triangle.
+    std::vector<Vec3> colors;
     std::vector<std::array<uint32_t, 3>> triangles;
     std::vector<uint32_t> materials;  // one per triangle
     // Two-sided meshes are hit from both sides (shading faces the normal forward). A one-sided

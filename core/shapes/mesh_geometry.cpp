@@ -88,6 +88,11 @@ class MeshBinding : public GeometryBinding {
                 out.terminator_offset = terminator_offset(out.position, corners, normals, weights);
             }
         }
+        if (!mesh.colors.empty() && mesh.colors.size() == mesh.positions.size()) {
+            const float u = rayhit.hit.u, v = rayhit.hit.v;
+            out.vertex_color = (1.0f - u - v) * mesh.colors[tri[0]] + u * mesh.colors[tri[1]] +
+                               v * mesh.colors[tri[2]];
+        }
         const Vec3& p0 = mesh.positions[tri[0]];
         out.object_size = glm::max(glm::length(mesh.positions[tri[1]] - p0),
                                    glm::length(mesh.positions[tri[2]] - p0));

@@ -110,6 +110,23 @@ TEST(MeshLoaderObj, MtlMaterialsMappedOntoPhong) {
     expect_vec3(mesh.positions[mesh.triangles[2][2]], 1, 0, 1);
 }
 
+TEST(MeshLoaderObj, VertexColoursExtension) {
+    TempDir dir;
+    const std::string path =
+        dir.write("c.obj", "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nf 1 2 3\n");
+    std::vector<Material> materials;
+    const TriangleMesh mesh = load_obj(path, materials, "here");
+    ASSERT_EQ(mesh.colors.size(), 3u);
+    expect_vec3(mesh.colors[1], 0, 1, 0);
+    // Without colours on every vertex there are none; a negative colour is refused.
+    const std::string plain = dir.write("p.obj", "v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_TRUE(load_obj(plain, materials, "here").colors.empty());
+    const std::string bad =
+        dir.write("b.obj", "v 0 0 0 1 -1 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nf 1 2 3\n");
+    const InputError error = expect_input_error([&] { load_obj(bad, materials, "here"); });
+    EXPECT_NE(error.message().find("vertex 1 colour"), std::string::npos) << error.message();
+}
+
 TEST(MeshLoaderObj, FacesWithoutMaterialUseDefault) {
     TempDir dir;
     const std::string path = dir.write("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
@@ -431,6 +448,28 @@ TEST(MeshLoaderGltf, EmissionFromFactorAndStrength) {
     const std::string bad = write_embedded(dir, "bad.gltf", a);
     const InputError error = expect_input_error([&] { load_gltf(bad, materials, "here"); });
     EXPECT_NE(error.message().find("emissiveFactor"), std::string::npos) << error.message();
+}
+
+TEST(MeshLoaderGltf, VertexColoursFromNormalizedBytes) {
+    // COLOR_0 as normalized unsigned-byte VEC4 (alpha ignored), appended after the indices.
+    TempDir dir;
+    GltfAsset a = make_gltf(5123);
+    const size_t offset = a.bin.size();
+    const uint8_t colours[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 51, 102, 255, 0};
+    a.bin.insert(a.bin.end(), colours, colours + 16);
+    a.doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", 16}});
+    a.doc["accessors"].push_back({{"bufferView", 3},
+                                  {"componentType", 5121},
+                                  {"normalized", true},
+                                  {"count", 4},
+                                  {"type", "VEC4"}});
+    a.doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 3;
+    const std::string path = write_embedded(dir, "c.gltf", a);
+    std::vector<Material> materials;
+    const TriangleMesh mesh = load_gltf(path, materials, "here");
+    ASSERT_EQ(mesh.colors.size(), 4u);
+    expect_vec3(mesh.colors[0], 1, 0, 0);
+    expect_vec3(mesh.colors[3], 0.2f, 0.4f, 1.0f);
 }
 
 TEST(MeshLoaderGltf, BinaryGlbWithUnsignedByteIndices) {
