@@ -96,6 +96,8 @@ render options:
   --display D, --view V    OCIO display and view for PNG/TIFF/JPEG [config defaults]
   --range R                clamp (default) or normalize (divide by the image maximum)
   --half                   write EXR as half float
+  --exr-compression C      EXR compression: zip (default), none, rle, zips, piz (lossless);
+                           pxr24, b44, b44a, dwaa, dwab (lossy); docs/performance.md
   --stream, --no-stream    write the file as tiles finish, in memory that does not grow with
                            the image (tiled EXR; PNG/TIFF/JPEG rows in order), or hold the
                            whole image and write it at the end [stream above 1024x1024;
@@ -331,6 +333,13 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             r.stream = StreamMode::Never;
         } else if (a == "--half") {
             r.output_options.half_float_exr = true;
+        } else if (a == "--exr-compression") {
+            const std::string& m = cursor.value();
+            if (!is_exr_compression(m)) {
+                throw UsageError(a + ": expected one of " + exr_compression_names() + ", got '" +
+                                 m + "'");
+            }
+            r.output_options.exr_compression = m;
         } else if (a == "--quiet" || a == "-q") {
             r.quiet = true;
         } else if (a == "--stats") {

@@ -76,7 +76,23 @@ void write_atomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO
     }
 }
 
+// OpenEXR 3.1's compressions (Imf::Compression), by OpenImageIO's names.
+const char* const kExrCompressions[] = {"none",  "rle", "zips", "zip",  "piz",
+                                        "pxr24", "b44", "b44a", "dwaa", "dwab"};
+
 }  // namespace
+
+std::string exr_compression_names() {
+    std::string names;
+    for (const char* name : kExrCompressions)
+        names += (names.empty() ? "" : ", ") + std::string(name);
+    return names;
+}
+
+bool is_exr_compression(const std::string& name) {
+    return std::find(std::begin(kExrCompressions), std::end(kExrCompressions), name) !=
+           std::end(kExrCompressions);
+}
 
 void check_output(const std::string& path, const OutputOptions& options) {
     const ImageFormat format = image_format_of(path);

@@ -19,8 +19,18 @@ struct OutputOptions {
     std::string view;     // empty: the display's default view
     RangeMode range = RangeMode::Clamp;
     bool half_float_exr = false;
+    // The EXR compression (--exr-compression), one of exr_compression_names(); kept in the file's
+    // "compression" attribute. zip: lossless and fast enough to overlap the render
+    // (docs/performance.md "EXR output").
+    std::string exr_compression = "zip";
     std::map<std::string, std::string> metadata;  // e.g. "rayo:scene", "rayo:spp", "Software"
 };
+
+// The compressions OpenEXR 3.1 offers, for --exr-compression and its error messages: lossless
+// none, rle, zips, zip, piz; lossy pxr24 (floats kept to 24 bits), b44 and b44a (half channels
+// only: float channels are stored uncompressed), dwaa and dwab (DCT, lossy colour).
+std::string exr_compression_names();
+bool is_exr_compression(const std::string& name);
 
 // The OCIO config rayo uses: $OCIO when set, else the shipped config (installed or source tree).
 std::string ocio_config_path();

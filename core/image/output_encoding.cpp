@@ -58,7 +58,11 @@ OIIO::ImageSpec image_spec(ImageFormat format, int width, int height,
         spec =
             OIIO::ImageSpec(width, height, 4,
                             options.half_float_exr ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
-        spec.attribute("compression", "zip");
+        if (!is_exr_compression(options.exr_compression))
+            throw InputError("--exr-compression",
+                             "unknown EXR compression '" + options.exr_compression +
+                                 "'; expected one of " + exr_compression_names());
+        spec.attribute("compression", options.exr_compression);
         // Rec.709 primaries and D65 white (x, y pairs: R, G, B, white), the film's space.
         const float chromaticities[8] = {0.64f, 0.33f, 0.30f,   0.60f,
                                          0.15f, 0.06f, 0.3127f, 0.3290f};

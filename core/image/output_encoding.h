@@ -23,7 +23,8 @@ ImageFormat image_format_of(const std::string& path);
 // The largest side each format takes (JPEG stores sides in 16 bits and libjpeg stops at 65500).
 int max_image_side(ImageFormat format);
 
-// The spec rayo writes: EXR scene-linear float or half with chromaticities, zip; PNG/JPEG 8-bit,
+// The spec rayo writes: EXR scene-linear float or half with chromaticities, the compression of
+// `options` (InputError for an unknown one); PNG/JPEG 8-bit,
 // TIFF 16-bit, display-referred; the metadata of `options` on every format.
 OIIO::ImageSpec image_spec(ImageFormat format, int width, int height, const OutputOptions& options);
 

@@ -3,13 +3,15 @@
 // (docs/high-resolution.md). Each is a tile sink (core/tile_sink.h):
 // - EXR: a tiled OpenEXR file (tiles of the render's tile size, line order "random Y"), every
 //   finished tile queued to a writer thread as it arrives, in any order: writing overlaps
-//   rendering, and finish() only writes what is still queued.
+//   rendering, and finish() only writes what is still queued. The writer takes the whole queue
+//   at once and writes each run of horizontally adjacent tiles in one write_tiles call, which
+//   OpenEXR compresses on its thread pool: compression is not held to one thread.
 // - PNG/TIFF/JPEG: each tile goes through the display encoding on the worker that rendered it
 //   (core/image/output_encoding.h: the OCIO view is per pixel) into the band of tile rows it
 //   belongs to; a band is queued to the writer thread, which writes scanlines in order, once it
 //   and every band above it are complete. Only bands not yet written are held.
-// The writer's queue is bounded (2 MB): workers wait when the disk or the compressor falls
-// behind, and what is left to write after the last tile stays small.
+// The writer's queue is bounded (2 MB, plus the batch being written): workers wait when the disk
+// or the compressor falls behind, and what is left to write after the last tile stays small.
 // Files are written to a temporary name and renamed by finish(), as write_image does; a stream
 // destroyed without a successful finish() removes its temporary. The pixels are those of
 // write_image on the same film, bit for bit (tests/image/tile_stream_test.cpp).

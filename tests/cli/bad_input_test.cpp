@@ -516,6 +516,11 @@ TEST_F(BadInputCli, FlagValuesCliTestDoesNotCover) {
         {"--aa-depth 9", "--aa-depth: expected an integer in [0, 8], got '9'"},
         {"--aa-depth -1", "--aa-depth: expected an integer in [0, 8], got '-1'"},
         {"--view", "--view: missing value"},
+        {"--exr-compression", "--exr-compression: missing value"},
+        {"--exr-compression zstd",
+         "--exr-compression: expected one of none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, "
+         "dwab, got 'zstd'"},
+        {"--exr-compression ZIP", "--exr-compression: expected one of"},
     };
     for (const Flag& f : flags) {
         expect_refused(std::string("render scene.nff -o out.png ") + f.args, "", f.expected, f.args,

@@ -73,6 +73,30 @@ TEST_F(StreamCli, StreamedRendersHoldTheInMemoryPixels) {
                                                 "streamed.exr", "streamed.png"}));
 }
 
+// --exr-compression reaches the file's header, streamed and in memory; the pixels of a lossless
+// compression are those of the default (zip).
+TEST_F(StreamCli, TheExrCompressionIsWrittenToTheHeader) {
+    write("scene.nff", kSceneNff);
+    const CommandResult zip = run("render scene.nff --no-stream -o zip.exr");
+    ASSERT_EQ(zip.exit_code, 0) << zip.output;
+    const Stored expected = read_stored("zip.exr");
+    EXPECT_EQ(expected.spec.get_string_attribute("compression"), "zip");
+    for (const std::string compression : {"none", "rle", "piz", "dwaa"}) {
+        for (const std::string stream : {"--stream", "--no-stream"}) {
+            const std::string label = compression + " " + stream;
+            const CommandResult r = run("render scene.nff " + stream + " --exr-compression " +
+                                        compression + " -o out.exr");
+            ASSERT_EQ(r.exit_code, 0) << label << "\n" << r.output;
+            const Stored got = read_stored("out.exr");
+            EXPECT_EQ(got.spec.get_string_attribute("compression"), compression) << label;
+            ASSERT_EQ(got.bytes.size(), expected.bytes.size()) << label;
+            const bool same =
+                std::memcmp(got.bytes.data(), expected.bytes.data(), got.bytes.size()) == 0;
+            EXPECT_EQ(same, compression != "dwaa") << label;  // DWAA is lossy
+        }
+    }
+}
+
 TEST_F(StreamCli, ImagesAboveAMegapixelStreamByDefault) {
     write("scene.nff", kSceneNff);
     const CommandResult r = run("render scene.nff --width 1100 --height 1000 -o big.exr");

@@ -78,21 +78,22 @@ Stored read_stored(const std::string& path) {
     return s;
 }
 
-// Streams `film` to `path` in tiles of `tile_size`, the tiles shuffled and delivered from
-// `threads` threads at once.
+// Streams `film` to `path` in tiles of `tile_size`, the tiles shuffled (or in row order) and
+// delivered from `threads` threads at once.
 void stream_film(const Film& film, const std::string& path, int tile_size, int threads,
-                 const OutputOptions& options) {
+                 const OutputOptions& options, bool shuffle = true) {
     const TileGrid grid(film.width(), film.height(), tile_size);
     auto stream = TileStream::open(path, film.width(), film.height(), tile_size, options);
     std::vector<int> order(grid.tile_count());
     std::iota(order.begin(), order.end(), 0);
     // A fixed shuffle (no RNG): stride through the tiles by a step prime to their count.
     std::vector<int> shuffled;
-    for (size_t i = 0, at = 0; i < order.size(); ++i, at = (at + 7) % order.size()) {
+    for (size_t i = 0, at = 0; shuffle && i < order.size(); ++i, at = (at + 7) % order.size()) {
         while (std::find(shuffled.begin(), shuffled.end(), static_cast<int>(at)) != shuffled.end())
             at = (at + 1) % order.size();
         shuffled.push_back(static_cast<int>(at));
     }
+    if (!shuffle) shuffled = order;
     stream->begin(grid);
     std::vector<std::thread> workers;
     for (int t = 0; t < threads; ++t) {
@@ -161,6 +162,60 @@ TEST_F(TileStreamTest, StreamedFilesHoldTheInMemoryWritersPixels) {
             fs::remove(memory);
         }
     }
+    EXPECT_TRUE(listing().empty());
+}
+
+// Tiles delivered in row order faster than the writer compresses them queue up in runs of
+// adjacent tiles, which the writer gathers into one write_tiles call each: the file still holds
+// the in-memory writer's pixels, at tile sizes that do and do not divide the image.
+TEST_F(TileStreamTest, RunsOfAdjacentTilesAreWrittenTogether) {
+    const Film film = test_film(1000, 150);
+    for (const bool half : {false, true}) {
+        OutputOptions options;
+        options.half_float_exr = half;
+        write_image(film, file("memory.exr"), options);
+        const Stored expected = read_stored(file("memory.exr"));
+        for (const int tile_size : {16, 64}) {
+            for (const int threads : {1, 2}) {
+                const std::string label = std::string(half ? "half" : "float") + " tile " +
+                                          std::to_string(tile_size) + " threads " +
+                                          std::to_string(threads);
+                stream_film(film, file("streamed.exr"), tile_size, threads, options, false);
+                const Stored got = read_stored(file("streamed.exr"));
+                ASSERT_EQ(got.bytes.size(), expected.bytes.size()) << label;
+                EXPECT_EQ(0, std::memcmp(got.bytes.data(), expected.bytes.data(), got.bytes.size()))
+                    << label;
+            }
+        }
+    }
+}
+
+// The compression of OutputOptions is the one in the header, streamed or not; the lossless ones
+// keep the pixels; an unknown one is refused before a file is made.
+TEST_F(TileStreamTest, TheExrCompressionIsTheOneAskedFor) {
+    const Film film = test_film(150, 97);
+    write_image(film, file("zip.exr"), OutputOptions());
+    const Stored expected = read_stored(file("zip.exr"));
+    EXPECT_EQ(expected.spec.get_string_attribute("compression"), "zip");
+    for (const std::string compression : {"none", "rle", "zips", "zip", "piz"}) {
+        OutputOptions options;
+        options.exr_compression = compression;
+        write_image(film, file("memory.exr"), options);
+        stream_film(film, file("streamed.exr"), 32, 2, options);
+        for (const std::string name : {"memory.exr", "streamed.exr"}) {
+            const Stored got = read_stored(file(name));
+            EXPECT_EQ(got.spec.get_string_attribute("compression"), compression) << name;
+            ASSERT_EQ(got.bytes.size(), expected.bytes.size()) << compression << " " << name;
+            EXPECT_EQ(0, std::memcmp(got.bytes.data(), expected.bytes.data(), got.bytes.size()))
+                << compression << " " << name;
+        }
+    }
+    OutputOptions unknown;
+    unknown.exr_compression = "zstd";
+    fs::remove_all(m_dir);
+    fs::create_directories(m_dir);
+    EXPECT_THROW(write_image(film, file("a.exr"), unknown), InputError);
+    EXPECT_THROW(TileStream::open(file("a.exr"), 64, 64, 16, unknown), InputError);
     EXPECT_TRUE(listing().empty());
 }
 
