@@ -1,5 +1,8 @@
 #include "apps/cli/cli.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <charconv>
 #include <chrono>
@@ -431,6 +434,21 @@ RenderFingerprint render_fingerprint(const RenderArgs& args, const SceneDescript
     };
 }
 
+// Destroys a stream whose render was interrupted, which removes its temporary file. Closing
+// an unfinished PNG makes libpng print "No IDATs written into file" on stderr: the file is
+// thrown away, so stderr is muted meanwhile (the workers are idle: nothing else prints).
+void discard_unfinished(std::unique_ptr<TileStream>& stream) {
+    if (!stream) return;
+    std::fflush(stderr);
+    const int saved = ::dup(STDERR_FILENO);
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (saved >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
+    stream.reset();
+    if (saved >= 0 && null >= 0) ::dup2(saved, STDERR_FILENO);
+    if (null >= 0) ::close(null);
+    if (saved >= 0) ::close(saved);
+}
+
 // RAYO_TEST_INTERRUPT=K[:TERM] (for tests): the render raises SIGINT (SIGTERM) once K tiles are
 // in the partial render, as a user's Ctrl-C would at that point.
 void apply_test_interrupt(PartialRender& partial) {
@@ -620,7 +638,7 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     if (partial && stop_requested()) {
         partial->flush();
         if (partial->tiles_done() < partial->tile_count()) {
-            stream.reset();  // removes its temporary file: nothing under the output's name
+            discard_unfinished(stream);  // nothing under the output's name
             const int done = partial->tiles_done();
             err << "rayo: interrupted: " << done << " of " << partial->tile_count()
                 << " tiles done; "

@@ -303,6 +303,10 @@ void PartialRender::record(const Tile& tile, const float* rgba) {
     m_jobs.push_back({tile, std::vector<float>(rgba, rgba + tile.pixel_count() * 4)});
     m_queued_bytes += bytes;
     m_wake.notify_one();
+    if (m_raise_after > 0 && ++m_recorded_this_run == m_raise_after) {
+        lock.unlock();
+        std::raise(m_raise_signal);  // on this worker: it takes no further tile
+    }
 }
 
 void PartialRender::flush() {
@@ -355,7 +359,6 @@ void PartialRender::run() {
         std::deque<Job> batch;
         batch.swap(m_jobs);
         m_writing = true;
-        int raise_signal = 0;
         if (m_error.empty()) {
             lock.unlock();
             std::string error;
@@ -370,21 +373,11 @@ void PartialRender::run() {
                 if (!error.empty() || m_done[job.tile.index]) continue;
                 m_done[job.tile.index] = 1;
                 ++m_done_count;
-                ++m_done_this_run;
-            }
-            if (m_raise_after > 0 && m_done_this_run >= m_raise_after) {
-                raise_signal = m_raise_signal;
-                m_raise_after = 0;
             }
         }
         for (const Job& job : batch) m_queued_bytes -= job.rgba.size() * sizeof(float);
         m_writing = false;
         m_idle.notify_all();
-        if (raise_signal != 0) {
-            lock.unlock();
-            std::raise(raise_signal);
-            lock.lock();
-        }
     }
 }
 

@@ -69,8 +69,9 @@ class PartialRender {
     // Removes the file (the output is complete).
     void remove();
 
-    // For tests (RAYO_TEST_INTERRUPT, apps/cli): raise `signal_number` once `tiles` tiles of
-    // this run are on the disk, as a user's Ctrl-C or kill would, at a deterministic point.
+    // For tests (RAYO_TEST_INTERRUPT, apps/cli): raise `signal_number` on the worker that
+    // records the `tiles`-th tile of this run, as a user's Ctrl-C or kill would at that point
+    // (with one thread, exactly `tiles` tiles are then done).
     void raise_after(int tiles, int signal_number);
 
   private:
@@ -100,7 +101,7 @@ class PartialRender {
     bool m_existing = false;   // opened by resume()
     std::vector<char> m_done;  // per tile: on the disk
     int m_done_count = 0;
-    int m_done_this_run = 0;
+    int m_recorded_this_run = 0;
     int m_raise_after = 0, m_raise_signal = 0;
 
     mutable std::mutex m_mutex;

@@ -118,7 +118,7 @@ TEST_F(StreamCli, InterruptingAStreamedRenderLeavesNothing) {
     bool sent = false;
     const WatchedResult r =
         run_watched({"render", "scene.nff", "--stream", "--width", "2000", "--height", "2000",
-                     "--spp", "4", "--threads", "1", "-o", "big.exr"},
+                     "--spp", "4", "--threads", "1", "--no-journal", "-o", "big.exr"},
                     120.0, [&](pid_t pid) {
                         // Once the temporary file exists, the stream is open and tiles are being
                         // written.
