@@ -58,31 +58,27 @@ RenderFingerprint parse_fingerprint(const std::string& text) {
     return entries;
 }
 
-// Every read is whole or reports false (end of file, error).
-bool read_at(int fd, void* data, size_t bytes, size_t offset) {
-    auto* p = static_cast<char*>(data);
+// All `bytes` at `offset` through pread or pwrite (retried after EINTR and short counts); false
+// on an error or at the end of the file.
+template <typename Io, typename Byte>
+bool transfer_at(Io io, int fd, Byte* data, size_t bytes, size_t offset) {
     while (bytes > 0) {
-        const ssize_t n = ::pread(fd, p, bytes, static_cast<off_t>(offset));
+        const ssize_t n = io(fd, data, bytes, static_cast<off_t>(offset));
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) return false;
-        p += n;
+        data += n;
         bytes -= static_cast<size_t>(n);
         offset += static_cast<size_t>(n);
     }
     return true;
 }
 
+bool read_at(int fd, void* data, size_t bytes, size_t offset) {
+    return transfer_at(::pread, fd, static_cast<char*>(data), bytes, offset);
+}
+
 bool write_at(int fd, const void* data, size_t bytes, size_t offset) {
-    const auto* p = static_cast<const char*>(data);
-    while (bytes > 0) {
-        const ssize_t n = ::pwrite(fd, p, bytes, static_cast<off_t>(offset));
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) return false;
-        p += n;
-        bytes -= static_cast<size_t>(n);
-        offset += static_cast<size_t>(n);
-    }
-    return true;
+    return transfer_at(::pwrite, fd, static_cast<const char*>(data), bytes, offset);
 }
 
 }  // namespace

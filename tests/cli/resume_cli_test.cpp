@@ -2,9 +2,10 @@
 // "Interrupt and resume"): SIGINT/SIGTERM stop the hand-out of tiles, keep the finished ones in
 // OUTPUT.rayo-partial and leave nothing under the output's name; `--resume` renders only the
 // missing tiles, into the same bits as an uninterrupted render, and refuses other settings;
-// records torn by kill -9 are rendered again. The interruptions are deterministic:
-// RAYO_TEST_INTERRUPT=K[:TERM] raises the signal on the worker that records the K-th tile, so
-// with one thread exactly K tiles are done.
+// records torn by kill -9 are rendered again. (`--no-journal`, which keeps nothing and ends at the
+// first signal: tests/cli/stream_cli_test.cpp and bad_input_files_test.cpp.) The interruptions are
+// deterministic: RAYO_TEST_INTERRUPT=K[:TERM] raises the signal on the worker that records the K-th
+// tile, so with one thread exactly K tiles are done.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
@@ -21,12 +22,8 @@ namespace {
 using rayo_test::CommandResult;
 using rayo_test::WatchedResult;
 
-// Two spheres, one partly off the image, a mirror: reflections, shadows and the background.
-// 150 × 100 pixels: 10 × 7 = 70 tiles of 16.
-const char* const kSceneNff =
-    "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution 150 100\n"
-    "b 0.2 0.3 0.5\nl 3 3 3\nl -3 2 4\nf 1 0 0 0.8 0.2 20 0 1\ns 0.3 0.2 0 1\n"
-    "f 0.9 0.9 0.9 0.2 0.8 50 0.6 1\ns -1.8 -0.6 -1 1.2\n";
+using rayo_test::kSceneNff;
+// kSceneNff is 150 × 100 pixels: 10 × 7 = 70 tiles of 16.
 constexpr int kTiles = 70;
 // The partial render's layout for this scene (core/image/partial_render.cpp): a 4096-byte
 // header, then one slot per tile of 32 bytes of record header and 16² float RGBA pixels.
@@ -230,29 +227,6 @@ TEST_F(ResumeCli, ResumeAfterKillMinus9) {
         << resumed.output;
     EXPECT_TRUE(stored("out.exr") == stored("reference.exr"));
     EXPECT_EQ(listing(), (std::set<std::string>{"scene.nff", "reference.exr", "out.exr"}));
-}
-
-// --no-journal: the first signal ends rayo at once, as before resuming existed; nothing kept.
-TEST_F(ResumeCli, NoJournalKeepsNothing) {
-    write("scene.nff", kSceneNff);
-    bool sent = false;
-    const WatchedResult r =
-        run_watched({"render", "scene.nff", "--width", "1200", "--height", "800", "--spp", "16",
-                     "--threads", "1", "--no-journal", "--stream", "-o", "out.exr"},
-                    120.0, [&](pid_t pid) {
-                        for (const std::string& name : listing()) {
-                            if (name.rfind(".out.exr.tmp", 0) == 0) {
-                                ::kill(pid, SIGINT);
-                                sent = true;
-                                return true;
-                            }
-                        }
-                        return false;
-                    });
-    ASSERT_TRUE(sent) << r.output;
-    EXPECT_EQ(r.exit_code, 130) << r.output;
-    EXPECT_EQ(r.output.find("finishing the tiles in flight"), std::string::npos) << r.output;
-    EXPECT_EQ(listing(), std::set<std::string>{"scene.nff"});
 }
 
 }  // namespace
