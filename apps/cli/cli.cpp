@@ -635,8 +635,16 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         result = render_scene(d, threads, progress, recorder ? recorder.get() : sink, ranks,
                               partial ? &missing : nullptr);
     }
-    if (partial && stop_requested()) {
+    if (partial) {
         partial->flush();
+        const std::string failure = partial->failure();
+        if (!failure.empty() && !args.quiet) {
+            err << "rayo: warning: " << failure << "; the render went on without keeping its "
+                << "tiles (" << partial->tiles_done() << " of " << partial->tile_count()
+                << " kept)\n";
+        }
+    }
+    if (partial && stop_requested()) {
         if (partial->tiles_done() < partial->tile_count()) {
             discard_unfinished(stream);  // nothing under the output's name
             const int done = partial->tiles_done();

@@ -279,6 +279,11 @@ std::vector<int> PartialRender::missing_tiles() const {
     return missing;
 }
 
+std::string PartialRender::failure() const {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_error;
+}
+
 std::unique_ptr<TileSink> PartialRender::recording_sink(TileSink& inner) {
     return std::make_unique<Recorder>(*this, inner);
 }
@@ -295,7 +300,7 @@ void PartialRender::record(const Tile& tile, const float* rgba) {
     m_idle.wait(lock, [&] {
         return !m_error.empty() || m_jobs.empty() || m_queued_bytes + bytes <= kQueueBytes;
     });
-    if (!m_error.empty()) throw InputError(m_output, m_error);
+    if (!m_error.empty()) return;  // the partial render stopped growing (failure())
     m_jobs.push_back({tile, std::vector<float>(rgba, rgba + tile.pixel_count() * 4)});
     m_queued_bytes += bytes;
     m_wake.notify_one();
@@ -308,7 +313,6 @@ void PartialRender::record(const Tile& tile, const float* rgba) {
 void PartialRender::flush() {
     std::unique_lock<std::mutex> lock(m_mutex);
     m_idle.wait(lock, [&] { return !m_error.empty() || (m_jobs.empty() && !m_writing); });
-    if (!m_error.empty()) throw InputError(m_output, m_error);
 }
 
 void PartialRender::remove() {

@@ -64,8 +64,12 @@ class PartialRender {
     // `inner` the tiles saved by earlier runs (read back from the file), in tile order.
     std::unique_ptr<TileSink> recording_sink(TileSink& inner);
 
-    // Waits until every recorded tile is on the disk; InputError on a write failure.
+    // Waits until every recorded tile is on the disk (or the partial render failed).
     void flush();
+    // Why the partial render stopped growing (a write failed: e.g. a full disk, it needs 16 bytes
+    // a pixel), or empty. The render goes on without it; the tiles on the disk before the
+    // failure stay resumable.
+    std::string failure() const;
     // Removes the file (the output is complete).
     void remove();
 

@@ -199,6 +199,24 @@ TEST_F(ResumeCli, TornRecordsAreRenderedAgain) {
     EXPECT_EQ(listing(), (std::set<std::string>{"scene.nff", "reference.png", "out.png"}));
 }
 
+// A partial render that cannot grow (here the file-size limit; a full disk alike) does not fail
+// the render: a warning names the reason, and the output is whole.
+TEST_F(ResumeCli, AFailingPartialRenderDoesNotFailTheRender) {
+    write("scene.nff", kSceneNff);
+    ASSERT_EQ(run("render scene.nff --tile-size 16 -o reference.png").exit_code, 0);
+    const WatchedResult r =
+        run_watched({"render", "scene.nff", "--tile-size", "16", "--threads", "1", "-o", "out.png"},
+                    60.0, {}, kHeaderBytes + 20 * kSlotBytes);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("rayo: warning: out.png: partial render 'out.png.rayo-partial': "
+                            "cannot write: File too large; the render went on without keeping "
+                            "its tiles"),
+              std::string::npos)
+        << r.output;
+    EXPECT_TRUE(stored("out.png") == stored("reference.png"));
+    EXPECT_EQ(listing(), (std::set<std::string>{"scene.nff", "reference.png", "out.png"}));
+}
+
 // A real kill -9 in the middle of a render: resuming gives the uninterrupted image.
 TEST_F(ResumeCli, ResumeAfterKillMinus9) {
     write("scene.nff", kSceneNff);
