@@ -644,18 +644,14 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
                 << " kept)\n";
         }
     }
-    if (partial && stop_requested()) {
-        if (partial->tiles_done() < partial->tile_count()) {
-            discard_unfinished(stream);  // nothing under the output's name
-            const int done = partial->tiles_done();
-            err << "rayo: interrupted: " << done << " of " << partial->tile_count()
-                << " tiles done; "
-                << (done > 0
-                        ? "resume with --resume (the tiles are kept in " + partial->path() + ")"
-                        : std::string("nothing kept"))
-                << "\n";
-            return 128 + stop_signal();
-        }
+    if (partial && !partial->complete()) {  // a stop request ended the hand-out of tiles
+        discard_unfinished(stream);         // nothing under the output's name
+        const int done = partial->tiles_done();
+        err << "rayo: interrupted: " << done << " of " << partial->tile_count() << " tiles done; "
+            << (done > 0 ? "resume with --resume (the tiles are kept in " + partial->path() + ")"
+                         : std::string("nothing kept"))
+            << "\n";
+        return 128 + stop_signal();
     }
     if (!writes_image) return 0;
     if (streaming) {

@@ -22,6 +22,7 @@ constexpr uint64_t kRecordMagic = 0x454c4954'4f594152ULL;  // "RAYOTILE", little
 // being rendered (64 float tiles of 64²).
 constexpr size_t kQueueBytes = size_t(4) << 20;
 constexpr size_t kHeaderAlign = 4096;
+constexpr size_t kMaxHeaderBytes = size_t(1) << 20;
 
 // The fixed header of a tile's record; the pixels follow.
 struct RecordHeader {
@@ -113,6 +114,7 @@ class PartialRender::Recorder : public TileSink {
     void finish() override {
         m_partial.flush();
         m_inner.finish();
+        m_partial.m_complete = true;
     }
 
   private:
@@ -167,6 +169,7 @@ std::unique_ptr<PartialRender> PartialRender::resume(const std::string& output,
     size_t saved_bytes = 0;
     if (got > 0 && first.compare(0, magic.size(), magic) == 0)
         saved_bytes = std::strtoull(first.c_str() + magic.size(), nullptr, 10);
+    if (saved_bytes > kMaxHeaderBytes) saved_bytes = 0;  // not one of ours: refused below
     std::string saved(saved_bytes, '\0');
     if (saved_bytes < kHeaderAlign || saved_bytes % kHeaderAlign != 0 ||
         !read_at(p.m_fd, saved.data(), saved.size(), 0)) {

@@ -64,6 +64,10 @@ class PartialRender {
     // `inner` the tiles saved by earlier runs (read back from the file), in tile order.
     std::unique_ptr<TileSink> recording_sink(TileSink& inner);
 
+    // Whether the recording sink's finish() ran: every tile reached the output's sink (the tile
+    // loop skips finish() when a stop request ended the hand-out early).
+    bool complete() const { return m_complete; }
+
     // Waits until every recorded tile is on the disk (or the partial render failed).
     void flush();
     // Why the partial render stopped growing (a write failed: e.g. a full disk, it needs 16 bytes

@@ -179,5 +179,29 @@ TEST_F(PartialRenderTest, ResumeNamesEveryDifference) {
     EXPECT_THROW(PartialRender::create(m_output, grid, m_fingerprint), InputError);
 }
 
+// A file of that name that is not a partial render (or whose header claims an absurd size) is
+// refused by name, and left alone.
+TEST_F(PartialRenderTest, ForeignFilesAreRefused) {
+    const TileGrid grid(64, 64, 16);
+    for (const std::string text :
+         {std::string("hello\n"), std::string("rayo partial render 1 99999999999999999\n"),
+          std::string("rayo partial render 1 4096\n")}) {
+        std::FILE* file = std::fopen(partial_render_path(m_output).c_str(), "wb");
+        ASSERT_NE(file, nullptr);
+        std::fwrite(text.data(), 1, text.size(), file);
+        std::fclose(file);
+        try {
+            PartialRender::resume(m_output, grid, m_fingerprint);
+            FAIL() << text;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("--resume: '" + partial_render_path(m_output) +
+                                                 "' is not a partial render of rayo"),
+                      std::string::npos)
+                << e.what();
+        }
+        EXPECT_EQ(fs::file_size(partial_render_path(m_output)), text.size());
+    }
+}
+
 }  // namespace
 }  // namespace rayo
