@@ -107,6 +107,7 @@ class PartialRender {
     size_t m_header_bytes = 0;
     int m_fd = -1;
     bool m_existing = false;   // opened by resume()
+    bool m_complete = false;   // the recording sink's finish() ran
     std::vector<char> m_done;  // per tile: on the disk
     int m_done_count = 0;
     int m_recorded_this_run = 0;

@@ -183,7 +183,7 @@ TEST_F(PartialRenderTest, ResumeNamesEveryDifference) {
 // refused by name, and left alone.
 TEST_F(PartialRenderTest, ForeignFilesAreRefused) {
     const TileGrid grid(64, 64, 16);
-    for (const std::string text :
+    for (const std::string& text :
          {std::string("hello\n"), std::string("rayo partial render 1 99999999999999999\n"),
           std::string("rayo partial render 1 4096\n")}) {
         std::FILE* file = std::fopen(partial_render_path(m_output).c_str(), "wb");
