@@ -55,6 +55,16 @@ class PartialRenderTest : public ::testing::Test {
         return bits;
     }
 
+    // A run of a new partial render that records `indices` of `grid` and ends.
+    void record_tiles(const TileGrid& grid, const std::vector<int>& indices) const {
+        auto partial = PartialRender::create(m_output, grid, m_fingerprint);
+        Film sink(grid.image_width(), grid.image_height());
+        auto recorder = partial->recording_sink(sink);
+        recorder->begin(grid);
+        for (const int index : indices)
+            recorder->write_tile(grid.tile(index), tile_pixels(grid, index).data());
+    }
+
     fs::path m_dir;
     std::string m_output;
     const RenderFingerprint m_fingerprint{
@@ -106,14 +116,7 @@ TEST_F(PartialRenderTest, RecordedTilesComeBackBitForBit) {
 // A slot whose bytes do not match its checksum (torn, or another tile's) does not count.
 TEST_F(PartialRenderTest, SlotsThatDoNotCheckOutAreMissing) {
     const TileGrid grid(64, 64, 16);
-    {
-        auto partial = PartialRender::create(m_output, grid, m_fingerprint);
-        Film sink(64, 64);
-        auto recorder = partial->recording_sink(sink);
-        recorder->begin(grid);
-        for (int index = 0; index < 4; ++index)
-            recorder->write_tile(grid.tile(index), tile_pixels(grid, index).data());
-    }
+    record_tiles(grid, {0, 1, 2, 3});
     const std::string path = partial_render_path(m_output);
     const size_t slot = 32 + 16 * 16 * 16;
     // Tile 2's last pixel byte flipped; tile 3 cut short by one byte.
@@ -136,26 +139,14 @@ TEST_F(PartialRenderTest, SlotsThatDoNotCheckOutAreMissing) {
 // No tile, no file: a run stopped before its first tile leaves nothing.
 TEST_F(PartialRenderTest, NoTileNoFile) {
     const TileGrid grid(64, 64, 16);
-    {
-        auto partial = PartialRender::create(m_output, grid, m_fingerprint);
-        Film sink(64, 64);
-        auto recorder = partial->recording_sink(sink);
-        recorder->begin(grid);
-        partial->flush();
-    }
+    record_tiles(grid, {});
     EXPECT_TRUE(fs::is_empty(m_dir));
 }
 
 // Every entry that differs is named, with both values; entries only one side has too.
 TEST_F(PartialRenderTest, ResumeNamesEveryDifference) {
     const TileGrid grid(64, 64, 16);
-    {
-        auto partial = PartialRender::create(m_output, grid, m_fingerprint);
-        Film sink(64, 64);
-        auto recorder = partial->recording_sink(sink);
-        recorder->begin(grid);
-        recorder->write_tile(grid.tile(0), tile_pixels(grid, 0).data());
-    }
+    record_tiles(grid, {0});
     RenderFingerprint other = m_fingerprint;
     other[1].second = "100x71";
     other[2].second = "4";
