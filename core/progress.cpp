@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/stop_request.h"
+
 namespace rayo {
 
 std::string format_duration(double seconds) {
@@ -56,7 +58,9 @@ void ProgressReporter::finish() {
 void ProgressReporter::draw(bool final_line) {
     const double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
-    const uint64_t done = final_line ? m_total : std::min(m_done.load(), m_total);
+    // An interrupted render (core/stop_request.h) ends its bar where it stopped.
+    const uint64_t done =
+        final_line && !stop_requested() ? m_total : std::min(m_done.load(), m_total);
     const double fraction = static_cast<double>(done) / static_cast<double>(m_total);
     constexpr int kBarWidth = 40;
     const int filled = static_cast<int>(fraction * kBarWidth);

@@ -27,6 +27,7 @@
 #include "core/ray.h"
 #include "core/sampling.h"
 #include "core/stats.h"
+#include "core/stop_request.h"
 #include "core/tile_grid.h"
 #include "core/tile_sink.h"
 #include "core/tsan_handoff.h"
@@ -129,6 +130,8 @@ void render_tile(const Camera& camera, const Integrator& integrator, bool cohere
 
 // Renders the tiles of `grid` listed in `tiles` (all of them when empty) into `sink`. A pixel's
 // alpha is the share of its samples that had a camera ray; samples without one add no radiance.
+// A stop request (core/stop_request.h) ends the hand-out: the tiles in flight still reach the
+// sink, and the sink's finish() is called only when every listed tile was delivered.
 template <typename Camera, typename Integrator>
 RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
                          const TileSettings& settings, TileSink& sink,
@@ -146,6 +149,7 @@ RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
     // tiles in flight belong to. (A parallel_for over the tiles would split the range, and the
     // second worker would start in the middle of the image.)
     std::atomic<int> next_item{0};
+    std::atomic<int> delivered{0};
     const int workers = std::max(1, std::min(count, tbb::this_task_arena::max_concurrency()));
     // The caller's writes (sink, counters) before every task; every task before the merge.
     int handoff = 0;
@@ -156,7 +160,8 @@ RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
             tsan_acquire(&handoff);
             RayCounters& local = counters.local();
             std::vector<float>& rgba = buffers.local();
-            for (int item = next_item.fetch_add(1); item < count; item = next_item.fetch_add(1)) {
+            for (int item = next_item.fetch_add(1); item < count && !stop_requested();
+                 item = next_item.fetch_add(1)) {
                 const Tile tile = grid.tile(tiles.empty() ? item : tiles[item]);
                 rgba.assign(tile.pixel_count() * 4, 0.0f);
                 if (settings.aa == AntiAliasing::Adaptive) {
@@ -168,12 +173,13 @@ RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
                 }
                 sink.write_tile(tile, rgba.data());
                 if (progress) progress->add(tile.pixel_count());
+                delivered.fetch_add(1, std::memory_order_relaxed);
             }
             tsan_release(&handoff);
         },
         tbb::simple_partitioner());
     tsan_acquire(&handoff);
-    sink.finish();
+    if (delivered.load() == count) sink.finish();
 
     RayCounters total;
     for (const RayCounters& c : counters) total += c;

@@ -1,9 +1,13 @@
 #include "apps/cli/cli.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -21,6 +25,7 @@
 #include "apps/mpi/mpi_tile_distribution.h"
 #include "apps/mpi/mpi_world.h"
 #include "apps/scene/default_scene.h"
+#include "apps/scene/input_file.h"
 #include "apps/scene/preview.h"
 #include "apps/scene/renderer.h"
 #include "apps/scene/scene_loader.h"
@@ -28,9 +33,12 @@
 #include "bench/lab/spd_suite.h"
 #include "core/error.h"
 #include "core/image/image_output.h"
+#include "core/image/interrupt_cleanup.h"
+#include "core/image/partial_render.h"
 #include "core/image/tile_stream.h"
 #include "core/path_util.h"
 #include "core/progress.h"
+#include "core/stop_request.h"
 #include "shading/texture.h"
 
 namespace rayo {
@@ -102,6 +110,10 @@ render options:
                            the image (tiled EXR; PNG/TIFF/JPEG rows in order), or hold the
                            whole image and write it at the end [stream above 1024x1024;
                            docs/high-resolution.md]
+  --resume                 continue the interrupted render of the same output: render only
+                           the tiles missing from OUTPUT.rayo-partial (same scene and settings;
+                           docs/high-resolution.md)
+  --no-journal             keep no OUTPUT.rayo-partial: Ctrl-C ends at once, not resumable
   --quiet                  no progress bar and no summary line
   --stats                  print the full statistics table
 
@@ -221,6 +233,8 @@ struct RenderArgs {
     std::optional<bool> terminator_offset;
     OutputOptions output_options;
     StreamMode stream = StreamMode::Auto;
+    bool resume = false;
+    bool journal = true;
     bool quiet = false;
     bool stats = false;
 };
@@ -340,6 +354,10 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
                                  m + "'");
             }
             r.output_options.exr_compression = m;
+        } else if (a == "--resume") {
+            r.resume = true;
+        } else if (a == "--no-journal") {
+            r.journal = false;
         } else if (a == "--quiet" || a == "-q") {
             r.quiet = true;
         } else if (a == "--stats") {
@@ -425,6 +443,90 @@ std::string aa_summary(const RenderSettings& s) {
         text << "stratified, " << s.spp << " spp";
     }
     return text.str();
+}
+
+// What decides the pixels of a render (core/image/partial_render.h): a resumed render must
+// match it. Threads, streaming, --single-rays (the same bits by design) and the output's
+// encoding (applied to the saved floats at the end) may change between runs.
+RenderFingerprint render_fingerprint(const RenderArgs& args, const SceneDescription& d) {
+    std::string contents = "the built-in scene";
+    if (args.scene_path) {
+        std::string bytes =
+            read_input_file(*args.scene_path, *args.scene_path, "scene file", kMaxSceneFileBytes);
+        const size_t size = bytes.size();
+        bytes.resize((size + 7) / 8 * 8, '\0');
+        std::ostringstream text;
+        text << size << " bytes, checksum " << std::hex << checksum64(bytes.data(), bytes.size());
+        contents = text.str();
+    }
+    const RenderSettings& s = d.settings;
+    std::ostringstream light;
+    if (args.load_options.nff.light_intensity) {
+        light << *args.load_options.nff.light_intensity;
+    } else {
+        light << "default";
+    }
+    auto text = [](auto value) {
+        std::ostringstream out;
+        out << value;
+        return out.str();
+    };
+    std::ostringstream framing;  // model files only (--view-dir, --no-ground)
+    const ModelFraming& model = args.load_options.model;
+    if (model.view_direction) {
+        framing << "view " << model.view_direction->x << "," << model.view_direction->y << ","
+                << model.view_direction->z;
+    } else {
+        framing << "default view";
+    }
+    framing << (model.ground ? ", ground" : ", no ground");
+    return {
+        {"rayo version", RAYO_VERSION},
+        {"scene contents", contents},
+        {"resolution",
+         std::to_string(d.scene.camera.width) + "x" + std::to_string(d.scene.camera.height)},
+        {"tile size", std::to_string(s.tile_size)},
+        {"antialiasing", s.aa == AntiAliasing::Adaptive ? "adaptive" : "stratified"},
+        {"spp", std::to_string(s.spp)},
+        {"aa threshold", text(s.adaptive.threshold)},
+        {"aa depth", std::to_string(s.adaptive.depth)},
+        {"max depth", std::to_string(s.whitted.max_depth)},
+        {"sphere method", sphere_method_name(s.spheres) + (s.spheres.mesh_smooth ? "" : " flat")},
+        {"sphere math", sphere_math_name(s.sphere_math)},
+        {"max error px", text(s.max_error_px)},
+        {"gi", s.gi == GlobalIllumination::Radiosity ? "radiosity" : "none"},
+        {"gi view", s.gi_view_patches ? "patches" : "smooth"},
+        {"nff light intensity", light.str()},
+        {"shadow terminator", s.whitted.terminator_offset ? "offset" : "none"},
+        {"model framing", framing.str()},
+    };
+}
+
+// Destroys a stream whose render was interrupted, which removes its temporary file. Closing
+// an unfinished PNG makes libpng print "No IDATs written into file" on stderr: the file is
+// thrown away, so stderr is muted meanwhile (the workers are idle: nothing else prints).
+void discard_unfinished(std::unique_ptr<TileStream>& stream) {
+    if (!stream) return;
+    std::fflush(stderr);
+    const int saved = ::dup(STDERR_FILENO);
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (saved >= 0 && null >= 0) ::dup2(null, STDERR_FILENO);
+    stream.reset();
+    if (saved >= 0 && null >= 0) ::dup2(saved, STDERR_FILENO);
+    if (null >= 0) ::close(null);
+    if (saved >= 0) ::close(saved);
+}
+
+// RAYO_TEST_INTERRUPT=K[:TERM] (for tests): the render raises SIGINT (SIGTERM) once K tiles are
+// in the partial render, as a user's Ctrl-C would at that point.
+void apply_test_interrupt(PartialRender& partial) {
+    const char* value = std::getenv("RAYO_TEST_INTERRUPT");
+    if (value == nullptr || *value == '\0') return;
+    const std::string text = value;
+    const size_t colon = text.find(':');
+    const int tiles = std::atoi(text.substr(0, colon).c_str());
+    const bool term = colon != std::string::npos && text.substr(colon + 1) == "TERM";
+    if (tiles > 0) partial.raise_after(tiles, term ? SIGTERM : SIGINT);
 }
 
 void print_stats_table(std::ostream& out, const SceneDescription& d, const RenderResult& r,
@@ -562,26 +664,79 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         std::to_string(threads > 0 ? threads : default_thread_count());
     if (MpiWorld::distributed()) options.metadata["rayo:ranks"] = std::to_string(MpiWorld::size());
 
+    // The partial render (docs/high-resolution.md, "Interrupt and resume"): every finished tile
+    // is kept on the disk until the output is complete, and the first SIGINT/SIGTERM during
+    // the render stops the hand-out of tiles instead of ending rayo. Not under MPI.
+    if (args.resume && MpiWorld::distributed()) {
+        throw UsageError("--resume: not available under mpirun; resume in one process");
+    }
+    if (args.resume && !args.journal)
+        throw UsageError("--resume and --no-journal exclude each other");
+    std::unique_ptr<PartialRender> partial;
+    std::vector<int> missing;
+    if (args.journal && !MpiWorld::distributed()) {
+        const TileGrid grid(cam.width, cam.height, d.settings.tile_size);
+        const RenderFingerprint fingerprint = render_fingerprint(args, d);
+        partial = args.resume ? PartialRender::resume(output, grid, fingerprint)
+                              : PartialRender::create(output, grid, fingerprint);
+        missing = partial->missing_tiles();
+        apply_test_interrupt(*partial);
+        if (args.resume && !args.quiet) {
+            err << "rayo: resuming " << partial->path() << ": " << partial->tiles_done() << " of "
+                << partial->tile_count() << " tiles done, " << missing.size() << " to render\n";
+        }
+    }
+
     double write_s = 0.0;
     RenderResult result;
-    if (streaming) {
-        // The header is written before the first tile: no rayo:render_seconds in a streamed file.
-        // Only the rank that writes the image opens it.
-        std::unique_ptr<TileStream> stream;
-        if (writes_image) {
+    std::unique_ptr<TileStream> stream;
+    std::optional<Film> film;
+    {
+        std::optional<GracefulInterrupt> graceful;
+        if (partial) graceful.emplace();
+        // The header is written before the first tile: no rayo:render_seconds in a streamed
+        // file. Only the rank that writes the image opens it.
+        TileSink* sink = nullptr;
+        if (streaming && writes_image) {
             stream = TileStream::open(output, cam.width, cam.height, d.settings.tile_size, options);
+            sink = stream.get();
+        } else if (partial) {
+            film.emplace(cam.width, cam.height);
+            sink = &*film;
         }
-        result = render_scene(d, threads, progress, stream.get(), ranks);
-        if (!writes_image) return 0;
+        std::unique_ptr<TileSink> recorder;
+        if (partial) recorder = partial->recording_sink(*sink);
+        result = render_scene(d, threads, progress, recorder ? recorder.get() : sink, ranks,
+                              partial ? &missing : nullptr);
+    }
+    if (partial) {
+        partial->flush();
+        const std::string failure = partial->failure();
+        if (!failure.empty() && !args.quiet) {
+            err << "rayo: warning: " << failure << "; the render went on without keeping its "
+                << "tiles (" << partial->tiles_done() << " of " << partial->tile_count()
+                << " kept)\n";
+        }
+    }
+    if (partial && !partial->complete()) {  // a stop request ended the hand-out of tiles
+        discard_unfinished(stream);         // nothing under the output's name
+        const int done = partial->tiles_done();
+        err << "rayo: interrupted: " << done << " of " << partial->tile_count() << " tiles done; "
+            << (done > 0 ? "resume with --resume (the tiles are kept in " + partial->path() + ")"
+                         : std::string("nothing kept"))
+            << "\n";
+        return 128 + stop_signal();
+    }
+    if (!writes_image) return 0;
+    if (streaming) {
         write_s = stream->finish_seconds();
     } else {
-        result = render_scene(d, threads, progress, nullptr, ranks);
-        if (!writes_image) return 0;
         options.metadata["rayo:render_seconds"] = std::to_string(result.render_seconds);
         start = std::chrono::steady_clock::now();
-        write_image(result.film, output, options);
+        write_image(film ? *film : result.film, output, options);
         write_s = seconds_since(start);
     }
+    if (partial) partial->remove();  // the output is complete
 
     if (args.gi_log && result.radiosity) {
         // The chart of docs/radiosity.md: unshot energy (a fraction of the emitted) per shot.

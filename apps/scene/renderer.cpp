@@ -89,7 +89,8 @@ int default_thread_count() {
 }
 
 RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress,
-                          TileSink* sink, TileDistribution* distribution) {
+                          TileSink* sink, TileDistribution* distribution,
+                          const std::vector<int>* tiles) {
     const Camera camera = Camera::create(description.scene.camera, description.source + "#/camera");
     check_material_ids(description);
     const bool writes_image = distribution == nullptr || distribution->writes_image();
@@ -145,28 +146,36 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
                                        radiosity.get());
     if (sink == nullptr && writes_image) result.film = Film(camera.width(), camera.height());
     TileSink& target = sink ? *sink : result.film;
-    TileSettings tiles;
-    tiles.spp = description.settings.spp;
-    tiles.tile_size = description.settings.tile_size;
+    TileSettings settings;
+    settings.spp = description.settings.spp;
+    settings.tile_size = description.settings.tile_size;
     // Embree's built-in sphere kernel rounds differently in its packet and single-ray forms
     // (5% of balls_3's pixels change, docs/performance.md), so embree-point stays on single rays
     // to keep the promise that the coherent path changes no bits.
-    tiles.coherent =
+    settings.coherent =
         description.settings.coherent && result.spheres.spheres.method != SphereMethod::EmbreePoint;
-    tiles.aa = description.settings.aa;
-    tiles.adaptive = description.settings.adaptive;
-    result.coherent = tiles.coherent && tiles.aa == AntiAliasing::Stratified;
+    settings.aa = description.settings.aa;
+    settings.adaptive = description.settings.adaptive;
+    result.coherent = settings.coherent && settings.aa == AntiAliasing::Stratified;
 
     start = std::chrono::steady_clock::now();
     {
-        ProgressReporter progress(static_cast<uint64_t>(camera.width()) * camera.height(),
-                                  "rendering", show_progress && writes_image);
-        if (distribution == nullptr) {
-            result.counters = render_tiles(camera, integrator, tiles, target, &progress);
+        const TileGrid grid(camera.width(), camera.height(), settings.tile_size);
+        uint64_t pixels = static_cast<uint64_t>(camera.width()) * camera.height();
+        if (tiles) {
+            pixels = 0;
+            for (const int index : *tiles) pixels += grid.tile(index).pixel_count();
+        }
+        ProgressReporter progress(pixels, "rendering", show_progress && writes_image && pixels > 0);
+        if (tiles && tiles->empty()) {
+            target.begin(grid);
+            target.finish();
+        } else if (distribution == nullptr) {
+            result.counters = render_tiles(camera, integrator, settings, target, &progress,
+                                           tiles ? *tiles : std::vector<int>{});
         } else {
-            const TileGrid grid(camera.width(), camera.height(), tiles.tile_size);
             const auto render_chunk = [&](const std::vector<int>& list, TileSink& chunk_sink) {
-                return render_tiles(camera, integrator, tiles, chunk_sink, nullptr, list);
+                return render_tiles(camera, integrator, settings, chunk_sink, nullptr, list);
             };
             result.counters = distribution->render(grid, {}, render_chunk, target, &progress);
             result.processes = distribution->work();

@@ -35,8 +35,12 @@ struct RenderResult {
 // else to result.film. With a `distribution`, the tiles are shared out among its processes
 // (every process loads the scene and builds the BVH); the sink or film is filled, and the
 // progress shown, only where the distribution writes the image (pass no sink elsewhere).
+// `tiles` (when given; not with a distribution) lists the tiles to render, e.g. those a resumed
+// render still misses (core/image/partial_render.h): the progress bar and its ETA count only
+// them, and an empty list renders nothing (the sink gets begin() and finish()).
 RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress,
-                          TileSink* sink = nullptr, TileDistribution* distribution = nullptr);
+                          TileSink* sink = nullptr, TileDistribution* distribution = nullptr,
+                          const std::vector<int>* tiles = nullptr);
 
 // The thread count TBB uses when none is given.
 int default_thread_count();

@@ -7,6 +7,8 @@
 #include <csignal>
 #include <cstring>
 
+#include "core/stop_request.h"
+
 namespace rayo {
 
 namespace {
@@ -16,6 +18,7 @@ namespace {
 enum SlotState : int { kFree = 0, kFilling = 1, kActive = 2 };
 std::atomic<int> g_state[kMaxTemporaryFiles];
 char g_path[kMaxTemporaryFiles][PATH_MAX];
+std::atomic<bool> g_graceful{false};
 
 void write_stderr(const char* text) {
     ssize_t ignored = ::write(STDERR_FILENO, text, std::strlen(text));
@@ -23,6 +26,15 @@ void write_stderr(const char* text) {
 }
 
 extern "C" void on_interrupt(int signal_number) {
+    if (g_graceful.load() && !stop_requested()) {
+        request_stop(signal_number);
+        write_stderr(signal_number == SIGINT
+                         ? "\nrayo: interrupted (SIGINT): finishing the tiles in flight "
+                           "(again to stop at once)\n"
+                         : "\nrayo: terminated (SIGTERM): finishing the tiles in flight "
+                           "(again to stop at once)\n");
+        return;
+    }
     for (int i = 0; i < kMaxTemporaryFiles; ++i) {
         if (g_state[i].load() == kActive) ::unlink(g_path[i]);
     }
@@ -46,6 +58,14 @@ void install_interrupt_cleanup() {
         if (previous.sa_handler != SIG_IGN) sigaction(signal_number, &action, nullptr);
     }
     std::signal(SIGXFSZ, SIG_IGN);
+}
+
+GracefulInterrupt::GracefulInterrupt() {
+    g_graceful.store(true);
+}
+
+GracefulInterrupt::~GracefulInterrupt() {
+    g_graceful.store(false);
 }
 
 TemporaryFileGuard::TemporaryFileGuard(const std::string& path) {

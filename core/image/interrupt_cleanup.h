@@ -3,7 +3,10 @@
 // shell's status 128 + signal (130, 143), after removing the temporary files being written, so
 // that an interrupted run leaves no file behind under any name (docs/limits.md, "Signals").
 // Files are written to temporary names and renamed (core/image/image_output.h), so the final
-// name either holds a whole image or does not exist.
+// name either holds a whole image or does not exist. While a resumable render hands out tiles
+// (a GracefulInterrupt exists), the first signal only requests a stop (core/stop_request.h):
+// the tiles in flight finish and reach the partial render (core/image/partial_render.h); a
+// second signal ends rayo at once.
 #include <string>
 
 namespace rayo {
@@ -27,5 +30,16 @@ class TemporaryFileGuard {
 };
 
 constexpr int kMaxTemporaryFiles = 8;
+
+// While one exists, the first SIGINT/SIGTERM calls request_stop(signal) (core/stop_request.h)
+// and prints that rayo is finishing the tiles in flight; a further signal ends rayo as above.
+// Outside it (parse, BVH build, final write) every signal ends rayo at once.
+class GracefulInterrupt {
+  public:
+    GracefulInterrupt();
+    ~GracefulInterrupt();
+    GracefulInterrupt(const GracefulInterrupt&) = delete;
+    GracefulInterrupt& operator=(const GracefulInterrupt&) = delete;
+};
 
 }  // namespace rayo

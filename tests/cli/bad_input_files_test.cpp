@@ -244,23 +244,25 @@ TEST_F(BadInputFiles, WriteErrorsNameTheOutputAndTheReason) {
 }
 
 // SIGINT and SIGTERM end rayo with 130 and 143 at any phase, and leave no file under any name:
-// before the write (nothing exists yet) and during it (the temporary file is removed).
+// before the write (nothing exists yet) and during it (the temporary file is removed). With
+// --no-journal: a render that keeps its finished tiles for --resume stops more gently
+// (tests/cli/resume_cli_test.cpp).
 TEST_F(BadInputFiles, SignalsLeaveNoFileAndExitWith128PlusTheSignal) {
     // During the write: the signal goes as soon as the temporary file appears.
     for (const int signal_number : {SIGINT, SIGTERM}) {
         bool saw_temporary = false;
-        const WatchedResult r = run_watched(
-            {"render", "--width", "2048", "--height", "2048", "-o", "big.exr", "--quiet"},
-            kSecondsLimit, [&](pid_t pid) {
-                for (const std::string& name : listing()) {
-                    if (name.find(".tmp") != std::string::npos) {
-                        saw_temporary = true;
-                        ::kill(pid, signal_number);
-                        return true;
-                    }
-                }
-                return false;
-            });
+        const WatchedResult r = run_watched({"render", "--width", "2048", "--height", "2048", "-o",
+                                             "big.exr", "--quiet", "--no-journal"},
+                                            kSecondsLimit, [&](pid_t pid) {
+                                                for (const std::string& name : listing()) {
+                                                    if (name.find(".tmp") != std::string::npos) {
+                                                        saw_temporary = true;
+                                                        ::kill(pid, signal_number);
+                                                        return true;
+                                                    }
+                                                }
+                                                return false;
+                                            });
         ASSERT_TRUE(saw_temporary) << "the write was not caught in progress\n" << r.output;
         EXPECT_EQ(r.exit_code, 128 + signal_number) << r.output;
         EXPECT_EQ(r.shell_status, 128 + signal_number);
@@ -274,19 +276,19 @@ TEST_F(BadInputFiles, SignalsLeaveNoFileAndExitWith128PlusTheSignal) {
           "resolution 2048 2048\nl 3 3 3\nf 1 0 0 0.8 0.2 20 0 0\ns 0 0 0 1\n");
     for (const double delay : {-1.0, 0.0, 0.3, 1.0}) {
         std::optional<std::chrono::steady_clock::time_point> installed;
-        const WatchedResult r =
-            run_watched({"render", "scene.nff", "--spp", "64", "-o", "out.png", "--quiet"},
-                        kSecondsLimit, [&](pid_t pid) {
-                            const auto now = std::chrono::steady_clock::now();
-                            if (!installed && delay >= 0.0 && catches_sigint(pid)) installed = now;
-                            if (delay >= 0.0 &&
-                                (!installed ||
-                                 std::chrono::duration<double>(now - *installed).count() < delay)) {
-                                return false;
-                            }
-                            ::kill(pid, SIGINT);
-                            return true;
-                        });
+        const WatchedResult r = run_watched(
+            {"render", "scene.nff", "--spp", "64", "-o", "out.png", "--quiet", "--no-journal"},
+            kSecondsLimit, [&](pid_t pid) {
+                const auto now = std::chrono::steady_clock::now();
+                if (!installed && delay >= 0.0 && catches_sigint(pid)) installed = now;
+                if (delay >= 0.0 &&
+                    (!installed ||
+                     std::chrono::duration<double>(now - *installed).count() < delay)) {
+                    return false;
+                }
+                ::kill(pid, SIGINT);
+                return true;
+            });
         EXPECT_EQ(r.shell_status, 130) << "delay " << delay << " s\n" << r.output;
         if (delay >= 0.0) {
             EXPECT_EQ(r.exit_code, 130) << "delay " << delay << " s: not handled";

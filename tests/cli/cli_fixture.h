@@ -22,6 +22,13 @@
 
 namespace rayo_test {
 
+// Two spheres, one partly off the image, a mirror: reflections, shadows and the background;
+// 150 × 100 pixels (the streaming and resume tests).
+inline const char* const kSceneNff =
+    "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution 150 100\n"
+    "b 0.2 0.3 0.5\nl 3 3 3\nl -3 2 4\nf 1 0 0 0.8 0.2 20 0 1\ns 0.3 0.2 0 1\n"
+    "f 0.9 0.9 0.9 0.2 0.8 50 0.6 1\ns -1.8 -0.6 -1 1.2\n";
+
 struct CommandResult {
     int exit_code;
     std::string output;  // stdout and stderr together

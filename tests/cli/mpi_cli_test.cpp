@@ -130,6 +130,22 @@ TEST_F(MpiCli, AnUnwritableOutputOnRankZeroStopsEveryRank) {
     EXPECT_EQ(r.output.find("rayo: error:"), r.output.rfind("rayo: error:"));
 }
 
+// No partial render under mpirun (docs/high-resolution.md, "Interrupt and resume"): none is
+// left by a render, and --resume is refused once, by every rank.
+TEST_F(MpiCli, ResumeIsRefusedAndNoPartialRenderIsKept) {
+    write("scene.nff", kScene);
+    const CommandResult r = run("render scene.nff --tile-size 16 -o x.exr", mpirun(2));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(listing(), (std::set<std::string>{"scene.nff", "x.exr"}));
+    const CommandResult resume = run("render scene.nff -o y.exr --resume", mpirun(2));
+    EXPECT_EQ(resume.exit_code, 2) << resume.output;
+    EXPECT_NE(resume.output.find("rayo: error: --resume: not available under mpirun"),
+              std::string::npos)
+        << resume.output;
+    EXPECT_EQ(resume.output.find("rayo: error:"), resume.output.rfind("rayo: error:"));
+    EXPECT_EQ(listing(), (std::set<std::string>{"scene.nff", "x.exr"}));
+}
+
 }  // namespace
 }  // namespace rayo_test
 #endif

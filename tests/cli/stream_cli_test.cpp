@@ -16,11 +16,7 @@ namespace {
 using rayo_test::CommandResult;
 using rayo_test::WatchedResult;
 
-// Two spheres, one partly off the image, a mirror: reflections, shadows and the background.
-const char* const kSceneNff =
-    "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution 150 100\n"
-    "b 0.2 0.3 0.5\nl 3 3 3\nl -3 2 4\nf 1 0 0 0.8 0.2 20 0 1\ns 0.3 0.2 0 1\n"
-    "f 0.9 0.9 0.9 0.2 0.8 50 0.6 1\ns -1.8 -0.6 -1 1.2\n";
+using rayo_test::kSceneNff;
 
 // The pixels as stored in the file (half stays half, 8-bit stays 8-bit) and the spec.
 struct Stored {
@@ -142,7 +138,7 @@ TEST_F(StreamCli, InterruptingAStreamedRenderLeavesNothing) {
     bool sent = false;
     const WatchedResult r =
         run_watched({"render", "scene.nff", "--stream", "--width", "2000", "--height", "2000",
-                     "--spp", "4", "--threads", "1", "-o", "big.exr"},
+                     "--spp", "4", "--threads", "1", "--no-journal", "-o", "big.exr"},
                     120.0, [&](pid_t pid) {
                         // Once the temporary file exists, the stream is open and tiles are being
                         // written.
@@ -157,6 +153,8 @@ TEST_F(StreamCli, InterruptingAStreamedRenderLeavesNothing) {
                     });
     EXPECT_TRUE(sent) << r.output;
     EXPECT_EQ(r.shell_status, 130) << r.output;
+    // --no-journal: no partial render to finish tiles for (tests/cli/resume_cli_test.cpp).
+    EXPECT_EQ(r.output.find("finishing the tiles in flight"), std::string::npos) << r.output;
     EXPECT_EQ(listing(), std::set<std::string>{"scene.nff"});
 }
 

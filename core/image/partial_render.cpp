@@ -1,0 +1,387 @@
+#include "core/image/partial_render.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace rayo {
+
+namespace {
+
+constexpr const char* kMagicLine = "rayo partial render 1";
+constexpr uint64_t kRecordMagic = 0x454c4954'4f594152ULL;  // "RAYOTILE", little-endian
+// Tiles queued for the disk before workers wait: what a kill -9 can lose besides the tiles
+// being rendered (64 float tiles of 64²).
+constexpr size_t kQueueBytes = size_t(4) << 20;
+constexpr size_t kHeaderAlign = 4096;
+constexpr size_t kMaxHeaderBytes = size_t(1) << 20;
+
+// The fixed header of a tile's record; the pixels follow.
+struct RecordHeader {
+    uint64_t magic = kRecordMagic;
+    uint32_t index = 0;
+    uint32_t pixels = 0;
+    uint64_t pixel_checksum = 0;
+    uint64_t header_checksum = 0;  // of the 24 bytes above
+
+    uint64_t own_checksum() const { return checksum64(this, 24); }
+};
+static_assert(sizeof(RecordHeader) == 32, "records are 32 bytes of header and the pixels");
+
+// "name: value" lines (a value's line breaks become spaces).
+std::string fingerprint_text(const RenderFingerprint& fingerprint) {
+    std::string text;
+    for (const auto& [name, value] : fingerprint) {
+        std::string line = value;
+        for (char& c : line)
+            if (c == '\n' || c == '\r' || c == '\0') c = ' ';
+        text += name + ": " + line + "\n";
+    }
+    return text;
+}
+
+RenderFingerprint parse_fingerprint(const std::string& text) {
+    RenderFingerprint entries;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+        const size_t colon = line.find(": ");
+        if (colon != std::string::npos)
+            entries.emplace_back(line.substr(0, colon), line.substr(colon + 2));
+    }
+    return entries;
+}
+
+// All `bytes` at `offset` through pread or pwrite (retried after EINTR and short counts); false
+// on an error or at the end of the file.
+template <typename Io, typename Byte>
+bool transfer_at(Io io, int fd, Byte* data, size_t bytes, size_t offset) {
+    while (bytes > 0) {
+        const ssize_t n = io(fd, data, bytes, static_cast<off_t>(offset));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        data += n;
+        bytes -= static_cast<size_t>(n);
+        offset += static_cast<size_t>(n);
+    }
+    return true;
+}
+
+bool read_at(int fd, void* data, size_t bytes, size_t offset) {
+    return transfer_at(::pread, fd, static_cast<char*>(data), bytes, offset);
+}
+
+bool write_at(int fd, const void* data, size_t bytes, size_t offset) {
+    return transfer_at(::pwrite, fd, static_cast<const char*>(data), bytes, offset);
+}
+
+}  // namespace
+
+std::string partial_render_path(const std::string& output) {
+    return output + ".rayo-partial";
+}
+
+uint64_t checksum64(const void* data, size_t bytes) {
+    uint64_t hash = 0xcbf29ce484222325ULL;
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i + 8 <= bytes; i += 8) {
+        uint64_t word;
+        std::memcpy(&word, p + i, 8);
+        hash = (hash ^ word) * 0x100000001b3ULL;
+    }
+    return hash;
+}
+
+// Passes tiles on and records them; begin() replays the saved ones first.
+class PartialRender::Recorder : public TileSink {
+  public:
+    Recorder(PartialRender& partial, TileSink& inner) : m_partial(partial), m_inner(inner) {}
+    void begin(const TileGrid& grid) override {
+        m_inner.begin(grid);
+        m_partial.replay(m_inner);
+    }
+    void write_tile(const Tile& tile, const float* rgba) override {
+        m_inner.write_tile(tile, rgba);
+        m_partial.record(tile, rgba);
+    }
+    void finish() override {
+        m_partial.flush();
+        m_inner.finish();
+        m_partial.m_complete = true;
+    }
+
+  private:
+    PartialRender& m_partial;
+    TileSink& m_inner;
+};
+
+PartialRender::PartialRender(const std::string& output, const TileGrid& grid,
+                             const RenderFingerprint& fingerprint)
+    : m_output(output),
+      m_path(partial_render_path(output)),
+      m_grid(grid),
+      m_done(static_cast<size_t>(grid.tile_count()), 0) {
+    const std::string body = fingerprint_text(fingerprint);
+    // The first line gives the header's size, so that the slots can be found before the
+    // fingerprint is parsed.
+    const size_t text_bytes = std::strlen(kMagicLine) + 24 + body.size();
+    m_header_bytes = (text_bytes + kHeaderAlign - 1) / kHeaderAlign * kHeaderAlign;
+    m_header = std::string(kMagicLine) + " " + std::to_string(m_header_bytes) + "\n" + body;
+    m_header.resize(m_header_bytes, '\0');
+}
+
+std::unique_ptr<PartialRender> PartialRender::create(const std::string& output,
+                                                     const TileGrid& grid,
+                                                     const RenderFingerprint& fingerprint) {
+    std::unique_ptr<PartialRender> partial(new PartialRender(output, grid, fingerprint));
+    struct stat info {};
+    if (::stat(partial->m_path.c_str(), &info) == 0) {
+        throw InputError(output, "a partial render of this output exists ('" + partial->m_path +
+                                     "'): continue it with --resume, or remove it to start over");
+    }
+    partial->m_thread = std::thread([p = partial.get()] { p->run(); });
+    return partial;
+}
+
+std::unique_ptr<PartialRender> PartialRender::resume(const std::string& output,
+                                                     const TileGrid& grid,
+                                                     const RenderFingerprint& fingerprint) {
+    std::unique_ptr<PartialRender> partial(new PartialRender(output, grid, fingerprint));
+    PartialRender& p = *partial;
+    p.m_fd = ::open(p.m_path.c_str(), O_RDWR | O_CLOEXEC);
+    if (p.m_fd < 0) {
+        const int error = errno;
+        throw InputError(output, "--resume: cannot open the partial render '" + p.m_path +
+                                     "': " + std::strerror(error) +
+                                     (error == ENOENT ? " (nothing to resume)" : ""));
+    }
+    // The header: its first line, then the fingerprint up to the padding.
+    std::string first(kHeaderAlign, '\0');
+    const ssize_t got = ::pread(p.m_fd, first.data(), first.size(), 0);
+    const std::string magic = std::string(kMagicLine) + " ";
+    size_t saved_bytes = 0;
+    if (got > 0 && first.compare(0, magic.size(), magic) == 0)
+        saved_bytes = std::strtoull(first.c_str() + magic.size(), nullptr, 10);
+    if (saved_bytes > kMaxHeaderBytes) saved_bytes = 0;  // not one of ours: refused below
+    std::string saved(saved_bytes, '\0');
+    if (saved_bytes < kHeaderAlign || saved_bytes % kHeaderAlign != 0 ||
+        !read_at(p.m_fd, saved.data(), saved.size(), 0)) {
+        ::close(p.m_fd);
+        p.m_fd = -1;
+        throw InputError(output, "--resume: '" + p.m_path + "' is not a partial render of rayo");
+    }
+    saved.resize(std::strlen(saved.c_str()));
+    const RenderFingerprint before = parse_fingerprint(saved.substr(saved.find('\n') + 1));
+    std::string differences;
+    auto value_in = [](const RenderFingerprint& f, const std::string& name) -> const std::string* {
+        for (const auto& [key, value] : f)
+            if (key == name) return &value;
+        return nullptr;
+    };
+    for (const auto& [name, value] : fingerprint) {
+        const std::string* old = value_in(before, name);
+        if (old && *old == value) continue;
+        differences += "\n  " + name + ": " + (old ? *old : "(not recorded)") +
+                       " in the partial render, " + value + " now";
+    }
+    for (const auto& [name, value] : before) {
+        if (!value_in(fingerprint, name))
+            differences += "\n  " + name + ": " + value + " in the partial render, (none) now";
+    }
+    if (!differences.empty()) {
+        ::close(p.m_fd);
+        p.m_fd = -1;
+        throw InputError(output, "--resume: the partial render '" + p.m_path +
+                                     "' was made with other settings:" + differences +
+                                     "\nresume with the same scene and settings, or remove it "
+                                     "to start over");
+    }
+    p.m_header = saved;
+    p.m_header.resize(saved_bytes, '\0');
+    p.m_header_bytes = saved_bytes;
+    p.scan();
+    p.m_existing = true;  // from here on, the destructor removes it if it holds no tile
+    p.m_thread = std::thread([q = partial.get()] { q->run(); });
+    return partial;
+}
+
+PartialRender::~PartialRender() {
+    {
+        std::unique_lock<std::mutex> lock(m_mutex);
+        m_stop = true;
+    }
+    m_wake.notify_all();
+    if (m_thread.joinable()) m_thread.join();
+    if (m_fd >= 0) ::close(m_fd);
+    if (m_done_count == 0 && (m_fd >= 0 || m_existing)) ::unlink(m_path.c_str());
+}
+
+size_t PartialRender::slot_bytes() const {
+    const size_t side = static_cast<size_t>(m_grid.tile_size());
+    return sizeof(RecordHeader) + side * side * 4 * sizeof(float);
+}
+
+size_t PartialRender::slot_offset(int index) const {
+    return m_header_bytes + static_cast<size_t>(index) * slot_bytes();
+}
+
+void PartialRender::fail(const std::string& what, int error) const {
+    throw InputError(m_output,
+                     "partial render '" + m_path + "': " + what + ": " + std::strerror(error));
+}
+
+// Reads every slot; a record counts when its header and pixels match their checksums.
+void PartialRender::scan() {
+    std::vector<float> pixels;
+    for (int index = 0; index < m_grid.tile_count(); ++index) {
+        const Tile tile = m_grid.tile(index);
+        RecordHeader header;
+        if (!read_at(m_fd, &header, sizeof header, slot_offset(index))) continue;
+        if (header.magic != kRecordMagic || header.index != static_cast<uint32_t>(index) ||
+            header.pixels != tile.pixel_count() || header.header_checksum != header.own_checksum())
+            continue;
+        pixels.resize(tile.pixel_count() * 4);
+        const size_t bytes = pixels.size() * sizeof(float);
+        if (!read_at(m_fd, pixels.data(), bytes, slot_offset(index) + sizeof header)) continue;
+        if (checksum64(pixels.data(), bytes) != header.pixel_checksum) continue;
+        m_done[index] = 1;
+        ++m_done_count;
+    }
+}
+
+void PartialRender::replay(TileSink& inner) const {
+    std::vector<float> pixels;
+    for (int index = 0; index < m_grid.tile_count(); ++index) {
+        if (!m_done[index]) continue;
+        const Tile tile = m_grid.tile(index);
+        pixels.resize(tile.pixel_count() * 4);
+        if (!read_at(m_fd, pixels.data(), pixels.size() * sizeof(float),
+                     slot_offset(index) + sizeof(RecordHeader)))
+            fail("cannot read tile " + std::to_string(index), errno != 0 ? errno : EIO);
+        inner.write_tile(tile, pixels.data());
+    }
+}
+
+int PartialRender::tiles_done() const {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_done_count;
+}
+
+std::vector<int> PartialRender::missing_tiles() const {
+    std::vector<int> missing;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    for (int index = 0; index < m_grid.tile_count(); ++index)
+        if (!m_done[index]) missing.push_back(index);
+    return missing;
+}
+
+std::string PartialRender::failure() const {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_error;
+}
+
+std::unique_ptr<TileSink> PartialRender::recording_sink(TileSink& inner) {
+    return std::make_unique<Recorder>(*this, inner);
+}
+
+void PartialRender::raise_after(int tiles, int signal_number) {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_raise_after = tiles;
+    m_raise_signal = signal_number;
+}
+
+void PartialRender::record(const Tile& tile, const float* rgba) {
+    const size_t bytes = tile.pixel_count() * 4 * sizeof(float);
+    std::unique_lock<std::mutex> lock(m_mutex);
+    m_idle.wait(lock, [&] {
+        return !m_error.empty() || m_jobs.empty() || m_queued_bytes + bytes <= kQueueBytes;
+    });
+    if (!m_error.empty()) return;  // the partial render stopped growing (failure())
+    m_jobs.push_back({tile, std::vector<float>(rgba, rgba + tile.pixel_count() * 4)});
+    m_queued_bytes += bytes;
+    m_wake.notify_one();
+    if (m_raise_after > 0 && ++m_recorded_this_run == m_raise_after) {
+        lock.unlock();
+        std::raise(m_raise_signal);  // on this worker: it takes no further tile
+    }
+}
+
+void PartialRender::flush() {
+    std::unique_lock<std::mutex> lock(m_mutex);
+    m_idle.wait(lock, [&] { return !m_error.empty() || (m_jobs.empty() && !m_writing); });
+}
+
+void PartialRender::remove() {
+    flush();
+    if (m_fd >= 0) ::close(m_fd);
+    m_fd = -1;
+    ::unlink(m_path.c_str());
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_done_count = 0;
+    m_existing = false;
+}
+
+// Creates the file (its header first, on the disk before any tile).
+void PartialRender::open_for_writing() {
+    if (m_fd >= 0) return;
+    m_fd = ::open(m_path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (m_fd < 0) fail("cannot create", errno);
+    if (!write_at(m_fd, m_header.data(), m_header.size(), 0)) fail("cannot write", errno);
+}
+
+// One batch: every record written, then one fdatasync; only then do its tiles count as done.
+void PartialRender::write_batch(std::deque<Job>& batch) {
+    open_for_writing();
+    for (const Job& job : batch) {
+        RecordHeader header;
+        header.index = static_cast<uint32_t>(job.tile.index);
+        header.pixels = static_cast<uint32_t>(job.tile.pixel_count());
+        const size_t bytes = job.rgba.size() * sizeof(float);
+        header.pixel_checksum = checksum64(job.rgba.data(), bytes);
+        header.header_checksum = header.own_checksum();
+        const size_t offset = slot_offset(job.tile.index);
+        if (!write_at(m_fd, &header, sizeof header, offset) ||
+            !write_at(m_fd, job.rgba.data(), bytes, offset + sizeof header))
+            fail("cannot write", errno);
+    }
+    if (::fdatasync(m_fd) != 0) fail("cannot write", errno);
+}
+
+void PartialRender::run() {
+    std::unique_lock<std::mutex> lock(m_mutex);
+    for (;;) {
+        m_wake.wait(lock, [&] { return m_stop || !m_jobs.empty(); });
+        if (m_jobs.empty()) return;  // stopped with nothing queued
+        std::deque<Job> batch;
+        batch.swap(m_jobs);
+        m_writing = true;
+        if (m_error.empty()) {
+            lock.unlock();
+            std::string error;
+            try {
+                write_batch(batch);
+            } catch (const std::exception& e) {
+                error = e.what();
+            }
+            lock.lock();
+            if (!error.empty()) m_error = error;
+            for (const Job& job : batch) {
+                if (!error.empty() || m_done[job.tile.index]) continue;
+                m_done[job.tile.index] = 1;
+                ++m_done_count;
+            }
+        }
+        for (const Job& job : batch) m_queued_bytes -= job.rgba.size() * sizeof(float);
+        m_writing = false;
+        m_idle.notify_all();
+    }
+}
+
+}  // namespace rayo
