@@ -182,6 +182,55 @@ class ShapeBinding : public ShapeSurfaceBinding<S> {
     UserGeometryData<S> m_data;
 };
 
+// One object of type G as one Embree user primitive through the generic callbacks (a height
+// field, a voxel grid: objects that hold a grid and walk it, docs/heightfields.md,
+// docs/voxels.md). The hit's `part` travels as the primitive id and its normal as Ng;
+// SurfaceHit::mesh gets the object's index, SurfaceHit::shape its type; `primitives` is what
+// the object counts for (a height field's triangles).
+template <typename G>
+class ObjectBinding : public GeometryBinding {
+  public:
+    ObjectBinding(const G& object, uint32_t object_index, uint32_t shape_index, size_t primitives)
+        : m_object(object),
+          m_object_index(object_index),
+          m_shape_index(shape_index),
+          m_primitives(primitives) {
+        m_data.shapes = &object;
+        m_data.intersectors = &object;
+        m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(m_geometry, 1);
+        rtcSetGeometryUserData(m_geometry, &m_data);
+        rtcSetGeometryBoundsFunction(m_geometry, user_bounds<G>, nullptr);
+        rtcSetGeometryIntersectFunction(m_geometry, user_intersect<G>);
+        rtcSetGeometryOccludedFunction(m_geometry, user_occluded<G>);
+    }
+    RTCGeometry geometry() const override { return m_geometry; }
+    size_t primitive_count() const override { return m_primitives; }
+    void surface(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& out) const override {
+        ShapeHit hit;
+        hit.t = rayhit.ray.tfar;
+        hit.normal = Vec3(rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z);
+        hit.part = rayhit.hit.primID;  // user_intersect reports primitive 0 + part
+        out.t = hit.t;
+        m_object.surface(ray, hit, out);
+        out.material = m_object.material;
+        out.shape = m_shape_index;
+        out.primitive = hit.part;
+        out.mesh = m_object_index;
+    }
+    void parameterize(SurfaceHit& hit) const override {
+        m_object.parameterization(hit.position, hit);
+    }
+
+  private:
+    const G& m_object;
+    uint32_t m_object_index;
+    uint32_t m_shape_index;
+    size_t m_primitives;
+    UserGeometryData<G> m_data;
+    RTCGeometry m_geometry = nullptr;
+};
+
 // The default binding of a shape type: user geometry. A shape type with other representations
 // overloads make_binding for its vector type (spheres: core/shapes/sphere_geometry.h).
 struct AccelOptions;

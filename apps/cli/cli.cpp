@@ -754,6 +754,7 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
     for (const auto& [name, count] : d.scene.shape_counts()) out << name << " " << count << "\n";
     out << "meshes " << d.scene.meshes.size() << "\n"
         << "triangles " << d.scene.triangle_count() << "\n"
+        << "voxel_grids " << d.scene.voxels.size() << "\n"
         << "materials " << d.shading.materials.size() << "\n"
         << "lights " << d.shading.lights.size() << "\n"
         << "skipped_triangles " << d.skipped_triangles << "\n";
