@@ -194,6 +194,10 @@ TEST(VoxelsScene, InfoCountsAndBadValuesAreRefusedAtTheirPointer) {
               "s.json#/objects/0/dims: expected dims that match the size of the voxel file '" +
                   ::testing::TempDir() +
                   "v222.raw': 2 × 2 × 3 u8 voxels are 12 bytes, the file has 8");
+    EXPECT_EQ(error(R"("file": "f32.raw", "dims": [2, 2, 2])"),
+              "s.json#/objects/0/dims: expected dims that match the size of the voxel file '" +
+                  ::testing::TempDir() +
+                  "f32.raw': 2 × 2 × 2 u8 voxels are 8 bytes, the file has 32");
     EXPECT_NE(error(R"("file": "v222.raw", "dims": [2, 2, 2], "format": "u16")")
                   .find("#/objects/0/dims: expected dims that match the size of the voxel file"),
               std::string::npos);
