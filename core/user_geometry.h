@@ -121,6 +121,20 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
     }
 }
 
+// A user geometry of `count` primitives of type S traced by the generic callbacks above, their
+// data at `data` (Embree 3 ignores the bounds function's own pointer: the data goes through
+// rtcSetGeometryUserData).
+template <typename S, typename Call = CallNearest>
+RTCGeometry new_user_geometry(unsigned count, UserGeometryData<S>* data) {
+    RTCGeometry geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, count);
+    rtcSetGeometryUserData(geometry, data);
+    rtcSetGeometryBoundsFunction(geometry, user_bounds<S>, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, user_intersect<S, Call>);
+    rtcSetGeometryOccludedFunction(geometry, user_occluded<S, Call>);
+    return geometry;
+}
+
 // The surfaces of hits on shapes of type S whose Embree primitive id is the shape's index: the
 // base of every binding of a Shape type (user geometry here; Embree's own point spheres and the
 // brute-force aggregate in core/shapes/sphere_geometry.cpp). Derived classes create m_geometry.
@@ -167,14 +181,8 @@ class ShapeBinding : public ShapeSurfaceBinding<S> {
             for (const S& s : shapes) m_intersectors.push_back(s.intersector());
             m_data.intersectors = m_intersectors.data();
         }
-        RTCGeometry geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
-        rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(shapes.size()));
-        // Embree 3 ignores the bounds function's own pointer: the data goes here.
-        rtcSetGeometryUserData(geometry, &m_data);
-        rtcSetGeometryBoundsFunction(geometry, user_bounds<S>, nullptr);
-        rtcSetGeometryIntersectFunction(geometry, user_intersect<S, Call>);
-        rtcSetGeometryOccludedFunction(geometry, user_occluded<S, Call>);
-        this->m_geometry = geometry;
+        this->m_geometry =
+            new_user_geometry<S, Call>(static_cast<unsigned>(shapes.size()), &m_data);
     }
 
   private:
@@ -197,12 +205,7 @@ class ObjectBinding : public GeometryBinding {
           m_primitives(primitives) {
         m_data.shapes = &object;
         m_data.intersectors = &object;
-        m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
-        rtcSetGeometryUserPrimitiveCount(m_geometry, 1);
-        rtcSetGeometryUserData(m_geometry, &m_data);
-        rtcSetGeometryBoundsFunction(m_geometry, user_bounds<G>, nullptr);
-        rtcSetGeometryIntersectFunction(m_geometry, user_intersect<G>);
-        rtcSetGeometryOccludedFunction(m_geometry, user_occluded<G>);
+        m_geometry = new_user_geometry<G>(1, &m_data);
     }
     RTCGeometry geometry() const override { return m_geometry; }
     size_t primitive_count() const override { return m_primitives; }

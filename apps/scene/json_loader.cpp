@@ -357,6 +357,18 @@ class SceneParser {
         return value ? colour(*value, child(pointer, key)) : fallback;
     }
 
+    // The required "size" of a box-like object: [x, y, z], each > 0.
+    Vec3 extent(const Json& object, const std::string& pointer) const {
+        const std::string where = child(pointer, "size");
+        const Json& size = require(object, pointer, "size", "[x, y, z], each > 0");
+        if (!size.is_array() || size.size() != 3) {
+            fail(where, "expected [x, y, z], each > 0, got " + describe(size));
+        }
+        return Vec3(real(size[0], child(where, size_t(0)), Bound::Positive),
+                    real(size[1], child(where, size_t(1)), Bound::Positive),
+                    real(size[2], child(where, size_t(2)), Bound::Positive));
+    }
+
     Vec3 direction(const Json& value, const std::string& pointer) const {
         const Vec3 v = vec3(value, pointer);
         const float length = glm::length(v);
@@ -1353,13 +1365,7 @@ void SceneParser::parse_heightfield(const Json& value, const std::string& pointe
                 "material"});
     HeightField field;
     const std::string size_pointer = child(pointer, "size");
-    const Json& size = require(value, pointer, "size", "[x, y, z], each > 0");
-    if (!size.is_array() || size.size() != 3) {
-        fail(size_pointer, "expected [x, y, z], each > 0, got " + describe(size));
-    }
-    for (size_t k = 0; k < 3; ++k) {
-        field.size[int(k)] = real(size[k], child(size_pointer, k), Bound::Positive);
-    }
+    field.size = extent(value, pointer);
     field.lower = Vec3(-0.5f * field.size.x, 0.0f, -0.5f * field.size.z);
     if (const Json* v = find(value, "origin")) field.lower = vec3(*v, child(pointer, "origin"));
     std::string method = "auto";
@@ -1473,13 +1479,7 @@ void SceneParser::parse_voxels(const Json& value, const std::string& pointer,
                                      : format == "u16" ? VoxelFormat::U16
                                                        : VoxelFormat::F32;
     const std::string size_pointer = child(pointer, "size");
-    const Json& size = require(value, pointer, "size", "[x, y, z], each > 0");
-    if (!size.is_array() || size.size() != 3) {
-        fail(size_pointer, "expected [x, y, z], each > 0, got " + describe(size));
-    }
-    for (size_t a = 0; a < 3; ++a) {
-        grid.size[int(a)] = real(size[a], child(size_pointer, a), Bound::Positive);
-    }
+    grid.size = extent(value, pointer);
     grid.lower = -0.5f * grid.size;
     if (const Json* v = find(value, "origin")) grid.lower = vec3(*v, child(pointer, "origin"));
     for (int a = 0; a < 3; ++a) {
