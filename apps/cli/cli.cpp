@@ -469,6 +469,11 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
                 << "(s) have no tessellation: they occlude but neither shoot nor receive "
                    "(docs/radiosity.md)\n";
         });
+        if (!d.scene.voxels.empty()) {
+            err << "rayo: warning: radiosity: " << d.scene.voxels.size()
+                << " voxel grid(s) are not in the solve: surface grids occlude, composite grids "
+                   "are not seen (docs/voxels.md)\n";
+        }
     }
     const std::string output = args.output ? *args.output : default_output_path(args);
     if (writes_image) check_output(output, args.output_options);  // before the render
