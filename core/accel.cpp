@@ -104,6 +104,18 @@ Accel::Accel(const Scene& scene, const AccelOptions& options) : m_options(option
                    make_height_field_binding(scene.heightfields[f], static_cast<uint32_t>(f),
                                              kHeightFieldShape));
     }
+    // Voxel grids (docs/voxels.md): a surface-mode grid is one user primitive walking its
+    // dual grid; composite-mode grids are not surfaces, the integrator composites them.
+    for (size_t v = 0; v < scene.voxels.size(); ++v) {
+        const VoxelGrid& grid = scene.voxels[v];
+        if (grid.mode == VoxelMode::Composite) {
+            m_volumes.push_back(&grid);
+            continue;
+        }
+        m_primitive_count += attach(m_rtc_scene, m_bindings,
+                                    std::make_unique<ObjectBinding<VoxelGrid>>(
+                                        grid, static_cast<uint32_t>(v), kVoxelShape, 1));
+    }
     m_stored_primitive_count = m_primitive_count;
     // Instancing: each instanced group's scene is built once; each instance is one Embree
     // instance geometry of the top scene pointing at it.

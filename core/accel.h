@@ -1,8 +1,9 @@
 #pragma once
 // The Embree acceleration structure: one committed RTCScene per render holding every registered
 // shape type (core/shapes/registry.h) as Embree user geometry running rayo's own intersection
-// code, and the meshes as Embree triangles. Follows the Embree 3 call order: device (one per
-// process, core/embree_device.h) -> scene -> geometries -> commit, then trace.
+// code, and the meshes as Embree triangles; height fields and surface-mode voxel grids as one
+// user primitive each. Follows the Embree 3 call order: device (one per process,
+// core/embree_device.h) -> scene -> geometries -> commit, then trace.
 #include <embree3/rtcore.h>
 
 #include <memory>
@@ -48,6 +49,9 @@ class Accel {
     size_t primitive_count() const { return m_primitive_count; }
     size_t stored_primitive_count() const { return m_stored_primitive_count; }
     size_t instance_count() const { return m_instance_count; }
+    // The composite-mode voxel grids (docs/voxels.md): not in the Embree scene; the integrator
+    // composites them along its rays (composite_volumes, core/shapes/voxel_grid.h).
+    const std::vector<const VoxelGrid*>& volumes() const { return m_volumes; }
 
   private:
     bool finish_hit(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& hit) const;
@@ -55,6 +59,7 @@ class Accel {
     AccelOptions m_options;
     RTCScene m_rtc_scene = nullptr;
     std::vector<std::unique_ptr<GeometryBinding>> m_bindings;  // indexed by Embree geomID
+    std::vector<const VoxelGrid*> m_volumes;                   // the scene's composite grids
     std::vector<GroupScene> m_groups;  // per Scene::groups entry; built when instanced
     size_t m_primitive_count = 0;
     size_t m_stored_primitive_count = 0;

@@ -2,7 +2,8 @@
 // The geometric scene: camera, the analytic shapes (one vector per registered type,
 // core/shapes/registry.h) and triangle meshes, with material ids. Materials and lights live in
 // shading/ (core knows nothing of shading); the loaders fill both. Height fields of the `dda`
-// method are kept as grids; the `mesh` method's are among the meshes.
+// method are kept as grids; the `mesh` method's are among the meshes. Voxel grids are kept as
+// grids.
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "core/shapes/height_field.h"
 #include "core/shapes/mesh.h"
 #include "core/shapes/registry.h"
+#include "core/shapes/voxel_grid.h"
 
 namespace rayo {
 
@@ -21,12 +23,18 @@ constexpr uint32_t kTriangleShape = AnalyticShapes::kCount;
 // SurfaceHit::shape of a hit on a height field traced by its grid traversal (SurfaceHit::mesh is
 // the field's index in Scene::heightfields; the `mesh` method's hits are triangle hits).
 constexpr uint32_t kHeightFieldShape = kTriangleShape + 1;
+// SurfaceHit::shape of a hit on a surface-mode voxel grid (SurfaceHit::mesh is its index in
+// Scene::voxels).
+constexpr uint32_t kVoxelShape = kTriangleShape + 2;
 
 struct Scene {
     CameraDesc camera;
     Shapes shapes;
     std::vector<TriangleMesh> meshes;
     std::vector<HeightField> heightfields;  // traced by grid traversal (docs/heightfields.md)
+    // Voxel grids (docs/voxels.md): surface-mode grids are Embree user geometry, composite-mode
+    // grids are composited along the rays by the integrator.
+    std::vector<VoxelGrid> voxels;
     // Named groups of objects and their placements (core/instance.h); empty for most scenes.
     std::vector<ShapeGroup> groups;
     std::vector<Instance> instances;

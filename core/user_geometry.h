@@ -121,6 +121,20 @@ void user_occluded(const RTCOccludedFunctionNArguments* args) {
     }
 }
 
+// A user geometry of `count` primitives of type S traced by the generic callbacks above, their
+// data at `data` (Embree 3 ignores the bounds function's own pointer: the data goes through
+// rtcSetGeometryUserData).
+template <typename S, typename Call = CallNearest>
+RTCGeometry new_user_geometry(unsigned count, UserGeometryData<S>* data) {
+    RTCGeometry geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, count);
+    rtcSetGeometryUserData(geometry, data);
+    rtcSetGeometryBoundsFunction(geometry, user_bounds<S>, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, user_intersect<S, Call>);
+    rtcSetGeometryOccludedFunction(geometry, user_occluded<S, Call>);
+    return geometry;
+}
+
 // The surfaces of hits on shapes of type S whose Embree primitive id is the shape's index: the
 // base of every binding of a Shape type (user geometry here; Embree's own point spheres and the
 // brute-force aggregate in core/shapes/sphere_geometry.cpp). Derived classes create m_geometry.
@@ -167,19 +181,57 @@ class ShapeBinding : public ShapeSurfaceBinding<S> {
             for (const S& s : shapes) m_intersectors.push_back(s.intersector());
             m_data.intersectors = m_intersectors.data();
         }
-        RTCGeometry geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
-        rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(shapes.size()));
-        // Embree 3 ignores the bounds function's own pointer: the data goes here.
-        rtcSetGeometryUserData(geometry, &m_data);
-        rtcSetGeometryBoundsFunction(geometry, user_bounds<S>, nullptr);
-        rtcSetGeometryIntersectFunction(geometry, user_intersect<S, Call>);
-        rtcSetGeometryOccludedFunction(geometry, user_occluded<S, Call>);
-        this->m_geometry = geometry;
+        this->m_geometry =
+            new_user_geometry<S, Call>(static_cast<unsigned>(shapes.size()), &m_data);
     }
 
   private:
     std::vector<typename ShapeTraits<S>::Intersector> m_intersectors;  // when S names one
     UserGeometryData<S> m_data;
+};
+
+// One object of type G as one Embree user primitive through the generic callbacks (a height
+// field, a voxel grid: objects that hold a grid and walk it, docs/heightfields.md,
+// docs/voxels.md). The hit's `part` travels as the primitive id and its normal as Ng;
+// SurfaceHit::mesh gets the object's index, SurfaceHit::shape its type; `primitives` is what
+// the object counts for (a height field's triangles).
+template <typename G>
+class ObjectBinding : public GeometryBinding {
+  public:
+    ObjectBinding(const G& object, uint32_t object_index, uint32_t shape_index, size_t primitives)
+        : m_object(object),
+          m_object_index(object_index),
+          m_shape_index(shape_index),
+          m_primitives(primitives) {
+        m_data.shapes = &object;
+        m_data.intersectors = &object;
+        m_geometry = new_user_geometry<G>(1, &m_data);
+    }
+    RTCGeometry geometry() const override { return m_geometry; }
+    size_t primitive_count() const override { return m_primitives; }
+    void surface(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& out) const override {
+        ShapeHit hit;
+        hit.t = rayhit.ray.tfar;
+        hit.normal = Vec3(rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z);
+        hit.part = rayhit.hit.primID;  // user_intersect reports primitive 0 + part
+        out.t = hit.t;
+        m_object.surface(ray, hit, out);
+        out.material = m_object.material;
+        out.shape = m_shape_index;
+        out.primitive = hit.part;
+        out.mesh = m_object_index;
+    }
+    void parameterize(SurfaceHit& hit) const override {
+        m_object.parameterization(hit.position, hit);
+    }
+
+  private:
+    const G& m_object;
+    uint32_t m_object_index;
+    uint32_t m_shape_index;
+    size_t m_primitives;
+    UserGeometryData<G> m_data;
+    RTCGeometry m_geometry = nullptr;
 };
 
 // The default binding of a shape type: user geometry. A shape type with other representations

@@ -64,6 +64,7 @@ WireframeStats draw_wireframe(const Scene& scene, const Camera& camera, Film& fi
     });
     for (const TriangleMesh& mesh : scene.meshes) draw(mesh);
     for (const HeightField& field : scene.heightfields) draw(field);
+    for (const VoxelGrid& grid : scene.voxels) draw(grid);  // the box
     return stats;
 }
 

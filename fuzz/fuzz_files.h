@@ -1,8 +1,8 @@
 #pragma once
 // Scratch files for the fuzzers: a private folder (in /dev/shm when there is one, so writing an
 // input per run is cheap) holding the small meshes the seed corpora refer to by name
-// (tri.obj + tri.mtl, tri.gltf + tri.bin) and the height image dem.pgm, and a helper that
-// writes the current input there.
+// (tri.obj + tri.mtl, tri.gltf + tri.bin), the height image dem.pgm and the voxel file vox.raw,
+// and a helper that writes the current input there.
 #include <unistd.h>
 
 #include <cstdint>
@@ -61,6 +61,11 @@ inline const std::filesystem::path& scratch_dir() {
         write_file(d / "tri.bin", tri_bin());
         write_file(d / "dem.pgm",
                    std::string("P5 3 3 255\n\x00\x40\x80\x20\xff\x60\x10\x30\x50", 20));
+        // 32 bytes: 4 × 4 × 2 u8 voxels, 4 × 2 × 2 u16 or 2 × 2 × 2 f32 (0, 0.25, ..., finite).
+        write_file(d / "vox.raw",
+                   std::string("\x00\x00\x00\x00\x00\x00\x80\x3e\x00\x00\x00\x3f\x00\x00\x40\x3f"
+                               "\x00\x00\x80\x3f\x00\x00\x20\x3f\x00\x00\xc0\x3e\x00\x00\x60\x3f",
+                               32));
         return d;
     }();
     // libFuzzer ends a clean run with exit(): remove the folder then (a crash keeps it). Registered

@@ -66,6 +66,25 @@ inline void check_scene(const SceneDescription& d) {
                "heightfield bounds");
         expect(f.material < materials, "heightfield material id out of range");
     }
+    for (const VoxelGrid& g : d.scene.voxels) {
+        expect(g.dims[0] >= 2 && g.dims[1] >= 2 && g.dims[2] >= 2 &&
+                   g.values.size() == size_t(g.dims[0]) * size_t(g.dims[1]) * size_t(g.dims[2]),
+               "voxel grid values");
+        for (float v : g.values) expect(finite(v), "voxel grid: non-finite value");
+        const Vec3 voxel = g.voxel_size();
+        expect(finite(g.lower) && finite(g.lower + g.size) && voxel.x > 0.0f && voxel.y > 0.0f &&
+                   voxel.z > 0.0f,
+               "voxel grid box");
+        expect(finite(g.threshold), "voxel grid threshold");
+        expect(!g.transfer.stops.empty(), "voxel grid: empty transfer");
+        for (size_t i = 0; i < g.transfer.stops.size(); ++i) {
+            const TransferStop& s = g.transfer.stops[i];
+            expect(finite(s.value) && finite(s.color) && finite(s.density) && s.density >= 0.0f &&
+                       (i == 0 || s.value >= g.transfer.stops[i - 1].value),
+                   "voxel grid transfer stop");
+        }
+        expect(g.material < materials, "voxel grid material id out of range");
+    }
     // Groups and instances (core/instance.h): the groups' objects as the scene's, every
     // instance naming a group, with a finite invertible transform and a valid material.
     for (const ShapeGroup& g : d.scene.groups) {

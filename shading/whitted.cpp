@@ -57,14 +57,36 @@ Vec3 WhittedIntegrator::through_medium(const Vec3& radiance, float t,
     return m_scene.fog.enabled() ? m_scene.fog.apply(radiance, t) : radiance;
 }
 
+Vec3 WhittedIntegrator::through_volumes(const Ray& ray, float t_end, const Vec3& behind) const {
+    const std::vector<const VoxelGrid*>& volumes = m_accel.volumes();
+    if (volumes.empty()) return behind;
+    float transmittance;
+    const Vec3 colour = composite_volumes(volumes.data(), volumes.size(), ray.origin, ray.direction,
+                                          ray.tnear, t_end, transmittance);
+    return colour + transmittance * behind;
+}
+
+Vec3 WhittedIntegrator::unoccluded(const Ray& shadow) const {
+    const std::vector<const VoxelGrid*>& volumes = m_accel.volumes();
+    if (volumes.empty()) return Vec3(1.0f);
+    float transmittance;
+    composite_volumes(volumes.data(), volumes.size(), shadow.origin, shadow.direction, shadow.tnear,
+                      shadow.tfar, transmittance);
+    return Vec3(transmittance);
+}
+
 Vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const Vec3& weight, RayCounters& counters,
                               const SurfaceCoefficients* medium) const {
     SurfaceHit hit;
     if (!m_accel.intersect(ray, hit)) {
         // A miss sees the background, or the pure fog colour (infinite distance, seed 004).
-        return !medium && m_scene.fog.enabled() ? m_scene.fog.color : m_scene.background;
+        return through_volumes(
+            ray, ray.tfar,
+            !medium && m_scene.fog.enabled() ? m_scene.fog.color : m_scene.background);
     }
-    return through_medium(shade(ray, hit, depth, weight, counters, medium), hit.t, medium);
+    return through_volumes(
+        ray, hit.t,
+        through_medium(shade(ray, hit, depth, weight, counters, medium), hit.t, medium));
 }
 
 WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(
@@ -183,8 +205,14 @@ Vec3 WhittedIntegrator::direct(const ShadingPoint& p, LightSide side, const Vec3
 
 Vec3 WhittedIntegrator::shadow_transmittance(Ray shadow, RayCounters& counters) const {
     if (m_settings.shadows == ShadowMode::Opaque) {
-        return m_accel.occluded(shadow) ? Vec3(0.0f) : Vec3(1.0f);
+        return m_accel.occluded(shadow) ? Vec3(0.0f) : unoccluded(shadow);
     }
+    const Vec3 volumes = unoccluded(shadow);
+    const Vec3 surfaces = filtered_transmittance(shadow, counters);
+    return volumes == Vec3(1.0f) ? surfaces : volumes * surfaces;
+}
+
+Vec3 WhittedIntegrator::filtered_transmittance(Ray shadow, RayCounters& counters) const {
     // Filtered (POV-Ray's filtered shadows): closest-hit queries from each transmissive surface
     // to the next, multiplying its transmit colour, until the light or an opaque surface.
     Vec3 filter(1.0f);
@@ -344,7 +372,7 @@ void WhittedIntegrator::radiance_coherent(const Ray* rays, int count, Vec3* radi
                 for (int k = 0; k < shadow_count; ++k) {
                     // Filtered shadows continue past surfaces ray by ray (shadow_transmittance).
                     const Vec3 filter = m_settings.shadows == ShadowMode::Opaque
-                                            ? Vec3(occluded[k] ? 0.0f : 1.0f)
+                                            ? (occluded[k] ? Vec3(0.0f) : unoccluded(shadows[k]))
                                             : shadow_transmittance(shadows[k], counters);
                     if (filter == Vec3(0.0f)) continue;
                     const Vec3 light_color =
@@ -356,11 +384,14 @@ void WhittedIntegrator::radiance_coherent(const Ray* rays, int count, Vec3* radi
         }
         for (int i = 0; i < n; ++i) {
             radiance[first + i] =
-                found[i] ? through_medium(add_transport(batch[i], hits[i], points[i], 0, Vec3(1.0f),
-                                                        color[i], counters),
-                                          hits[i].t, nullptr)
-                : m_scene.fog.enabled() ? m_scene.fog.color
-                                        : m_scene.background;
+                found[i]
+                    ? through_volumes(batch[i], hits[i].t,
+                                      through_medium(add_transport(batch[i], hits[i], points[i], 0,
+                                                                   Vec3(1.0f), color[i], counters),
+                                                     hits[i].t, nullptr))
+                    : through_volumes(
+                          batch[i], batch[i].tfar,
+                          m_scene.fog.enabled() ? m_scene.fog.color : m_scene.background);
         }
     }
 }

@@ -80,7 +80,16 @@ class WhittedIntegrator {
     // The fraction of light that reaches the end of `shadow`: 0 or 1 with opaque shadows; with
     // filtered shadows the product of the transmit colours of the surfaces it crosses (and the
     // Beer–Lambert absorption inside them), 0 at an opaque surface or past kMaxShadowCrossings.
+    // Either times the transmittance of the composite voxel volumes the shadow ray crosses.
     Vec3 shadow_transmittance(Ray shadow, RayCounters& counters) const;
+    // The filtered shadows' product over the surfaces alone.
+    Vec3 filtered_transmittance(Ray shadow, RayCounters& counters) const;
+    // The fraction of light a shadow ray that no surface blocks brings: 1, or the transmittance
+    // of the composite voxel volumes it crosses (docs/voxels.md; grey: σ is one number).
+    Vec3 unoccluded(const Ray& shadow) const;
+    // The composite voxel volumes (docs/voxels.md) along `ray` up to t_end, front to back, over
+    // the radiance `behind` them: C + T·behind (seed 004); `behind` itself when there are none.
+    Vec3 through_volumes(const Ray& ray, float t_end, const Vec3& behind) const;
     // The radiance `radiance` of the point at distance `t` along a ray through `medium` as it
     // arrives: Beer–Lambert inside an absorbing material, the fog between objects (seed 004).
     Vec3 through_medium(const Vec3& radiance, float t, const SurfaceCoefficients* medium) const;

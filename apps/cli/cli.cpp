@@ -634,6 +634,11 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
                 << "(s) have no tessellation: they occlude but neither shoot nor receive "
                    "(docs/radiosity.md)\n";
         });
+        if (!d.scene.voxels.empty()) {
+            err << "rayo: warning: radiosity: " << d.scene.voxels.size()
+                << " voxel grid(s) are not in the solve: surface grids occlude, composite grids "
+                   "are not seen (docs/voxels.md)\n";
+        }
     }
     const std::string output = args.output ? *args.output : default_output_path(args);
     if (writes_image) check_output(output, args.output_options);  // before the render
@@ -981,6 +986,7 @@ std::optional<Bounds3> direct_bounds(const Scene& scene) {
         for (const Vec3& p : m.positions) extend({p, p});
     }
     for (const HeightField& h : scene.heightfields) extend(h.bounds());
+    for (const VoxelGrid& v : scene.voxels) extend(v.bounds());
     return box;
 }
 
@@ -998,6 +1004,7 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
     out << "meshes " << d.scene.meshes.size() << "\n"
         << "triangles " << d.scene.triangle_count() << "\n"
         << "vertices " << vertex_count(d.scene) << "\n"
+        << "voxel_grids " << d.scene.voxels.size() << "\n"
         << "materials " << d.shading.materials.size() << "\n"
         << "lights " << d.shading.lights.size() << "\n"
         << "skipped_triangles " << d.skipped_triangles << "\n";

@@ -14,6 +14,7 @@ namespace rayo {
 constexpr uint64_t kMaxSceneFileBytes = uint64_t(1) << 31;     // NFF and JSON scenes: 2 GiB
 constexpr uint64_t kMaxMeshFileBytes = uint64_t(1) << 31;      // OBJ, glTF, .bin buffers: 2 GiB
 constexpr uint64_t kMaxMaterialFileBytes = uint64_t(1) << 26;  // .mtl libraries: 64 MiB
+constexpr uint64_t kMaxVoxelFileBytes = uint64_t(1) << 30;     // raw voxel files: 1 GiB
 
 // Which files a scene may reference. By default any readable regular file (relative names
 // resolve against the scene's directory; ".." and absolute paths are allowed, as users expect).

@@ -36,6 +36,11 @@ constexpr int kMaxJsonDepth = 256;
 // of the texture, a few microseconds: 4096² takes about a minute); larger fields come from images.
 constexpr int kMaxTextureHeightSide = 4096;
 
+// Most voxels a voxel grid may have (1 GiB of floats, 2^28: 645³ or 4096 × 4096 × 16), and
+// the most per side (docs/voxels.md).
+constexpr uint64_t kMaxVoxels = uint64_t(1) << 28;
+constexpr int kMaxVoxelSide = 1 << 16;
+
 // Most points an area light may be sampled at per shading point (each is a shadow ray).
 constexpr int kMaxAreaLightSamples = 4096;
 
@@ -352,6 +357,18 @@ class SceneParser {
         return value ? colour(*value, child(pointer, key)) : fallback;
     }
 
+    // The required "size" of a box-like object: [x, y, z], each > 0.
+    Vec3 extent(const Json& object, const std::string& pointer) const {
+        const std::string where = child(pointer, "size");
+        const Json& size = require(object, pointer, "size", "[x, y, z], each > 0");
+        if (!size.is_array() || size.size() != 3) {
+            fail(where, "expected [x, y, z], each > 0, got " + describe(size));
+        }
+        return Vec3(real(size[0], child(where, size_t(0)), Bound::Positive),
+                    real(size[1], child(where, size_t(1)), Bound::Positive),
+                    real(size[2], child(where, size_t(2)), Bound::Positive));
+    }
+
     Vec3 direction(const Json& value, const std::string& pointer) const {
         const Vec3 v = vec3(value, pointer);
         const float length = glm::length(v);
@@ -625,6 +642,8 @@ class SceneParser {
                                bool matrix = false) const;
     void parse_heightfield(const Json& value, const std::string& pointer,
                            SceneDescription& out) const;
+    void parse_voxels(const Json& value, const std::string& pointer, SceneDescription& out) const;
+    VoxelTransfer parse_transfer(const Json& value, const std::string& pointer) const;
     uint32_t material_of(const Json& object, const std::string& pointer) const;
 
     std::string m_source;
@@ -1254,7 +1273,7 @@ void SceneParser::parse_object(const Json& value, const std::string& pointer, Sc
     static const std::vector<std::string> types = [] {
         std::vector<std::string> names = Shapes::names();
         for (const char* kind :
-             {"triangle", "polygon", "mesh", "heightfield", "sphereflake", "instance"}) {
+             {"triangle", "polygon", "mesh", "heightfield", "voxels", "sphereflake", "instance"}) {
             names.push_back(kind);
         }
         return names;
@@ -1308,6 +1327,12 @@ void SceneParser::parse_object(const Json& value, const std::string& pointer, Sc
                  "a group may not contain height fields (they are placed directly only)");
         }
         parse_heightfield(value, pointer, out);
+    } else if (type == "voxels") {
+        if (sink.in_group) {
+            fail(child(pointer, "type"),
+                 "a group may not contain voxel grids (they are placed directly only)");
+        }
+        parse_voxels(value, pointer, out);
     } else if (type == "sphereflake") {
         // Spheres generated as the SPD "balls" scene places them (apps/scene/sphereflake.h):
         // a scene of many spheres without a file of them.
@@ -1344,13 +1369,7 @@ void SceneParser::parse_heightfield(const Json& value, const std::string& pointe
                 "material"});
     HeightField field;
     const std::string size_pointer = child(pointer, "size");
-    const Json& size = require(value, pointer, "size", "[x, y, z], each > 0");
-    if (!size.is_array() || size.size() != 3) {
-        fail(size_pointer, "expected [x, y, z], each > 0, got " + describe(size));
-    }
-    for (size_t k = 0; k < 3; ++k) {
-        field.size[int(k)] = real(size[k], child(size_pointer, k), Bound::Positive);
-    }
+    field.size = extent(value, pointer);
     field.lower = Vec3(-0.5f * field.size.x, 0.0f, -0.5f * field.size.z);
     if (const Json* v = find(value, "origin")) field.lower = vec3(*v, child(pointer, "origin"));
     std::string method = "auto";
@@ -1429,6 +1448,132 @@ void SceneParser::parse_heightfield(const Json& value, const std::string& pointe
     } else {
         out.scene.heightfields.push_back(std::move(field));
     }
+}
+
+// A voxel grid (docs/voxels.md): nx·ny·nz raw little-endian values from `file`, x fastest,
+// filling the box [origin, origin + size] (by default centred on 0), traced to its iso-surface
+// (`surface`) or composited through a transfer ramp (`composite`).
+void SceneParser::parse_voxels(const Json& value, const std::string& pointer,
+                               SceneDescription& out) const {
+    check_keys(value, pointer,
+               {"type", "file", "dims", "format", "size", "origin", "mode", "threshold", "transfer",
+                "material"});
+    VoxelGrid grid;
+    const std::string dims_pointer = child(pointer, "dims");
+    const std::string side_range = "[2, " + std::to_string(kMaxVoxelSide) + "]";
+    const Json& dims = require(value, pointer, "dims", "[nx, ny, nz], each in " + side_range);
+    if (!dims.is_array() || dims.size() != 3) {
+        fail(dims_pointer,
+             "expected [nx, ny, nz], each in " + side_range + ", got " + describe(dims));
+    }
+    uint64_t count = 1;
+    for (size_t a = 0; a < 3; ++a) {
+        grid.dims[a] = integer(dims[a], child(dims_pointer, a), 2, kMaxVoxelSide);
+        count *= uint64_t(grid.dims[a]);
+    }
+    if (count > kMaxVoxels) {
+        fail(dims_pointer, "expected at most " + std::to_string(kMaxVoxels) +
+                               " voxels in all, got " + std::to_string(count));
+    }
+    std::string format = "u8";
+    if (const Json* v = find(value, "format")) {
+        format = choice(*v, child(pointer, "format"), {"u8", "u16", "f32"});
+    }
+    const VoxelFormat voxel_format = format == "u8"    ? VoxelFormat::U8
+                                     : format == "u16" ? VoxelFormat::U16
+                                                       : VoxelFormat::F32;
+    const std::string size_pointer = child(pointer, "size");
+    grid.size = extent(value, pointer);
+    grid.lower = -0.5f * grid.size;
+    if (const Json* v = find(value, "origin")) grid.lower = vec3(*v, child(pointer, "origin"));
+    for (int a = 0; a < 3; ++a) {
+        // Voxels of a normal float size (a denormal one is flushed to zero) in a box that fits.
+        if (!(grid.voxel_size()[a] >= std::numeric_limits<float>::min()) ||
+            !within_scene_magnitude(grid.lower[a] + grid.size[a])) {
+            fail(size_pointer, std::string("expected a box whose voxels have a size > 0 in floats "
+                                           "and whose corners are ") +
+                                   kSceneMagnitudeRule);
+        }
+    }
+    std::string mode = "surface";
+    if (const Json* v = find(value, "mode")) {
+        mode = choice(*v, child(pointer, "mode"), {"surface", "composite"});
+    }
+    grid.mode = mode == "surface" ? VoxelMode::Surface : VoxelMode::Composite;
+    // Each mode's own fields; the other mode's are refused (they would do nothing).
+    for (const char* key : mode == "surface" ? std::vector<const char*>{"transfer"}
+                                             : std::vector<const char*>{"threshold", "material"}) {
+        if (find(value, key)) {
+            fail(child(pointer, key), std::string(key) + " applies to \"mode\": \"" +
+                                          (mode == "surface" ? "composite" : "surface") +
+                                          "\" only");
+        }
+    }
+    grid.threshold = real_or(value, pointer, "threshold", 0.5f);
+    grid.material = material_of(value, pointer);
+    if (const Json* v = find(value, "transfer")) {
+        grid.transfer = parse_transfer(*v, child(pointer, "transfer"));
+    }
+
+    const std::string file_pointer = child(pointer, "file");
+    const Json& file = require(value, pointer, "file", "a path to a raw voxel file");
+    if (!file.is_string() || file.get<std::string>().empty()) {
+        fail(file_pointer, "expected a path to a raw voxel file, got " + describe(file));
+    }
+    const std::string path = join_path(m_base_dir, file.get<std::string>());
+    const std::string bytes = read_input_file(path, m_source + "#" + file_pointer, "voxel file",
+                                              kMaxVoxelFileBytes, m_access);
+    const uint64_t expected = count * voxel_bytes(voxel_format);
+    if (bytes.size() != expected) {
+        fail(dims_pointer, "expected dims that match the size of the voxel file '" + path +
+                               "': " + std::to_string(grid.dims[0]) + " × " +
+                               std::to_string(grid.dims[1]) + " × " + std::to_string(grid.dims[2]) +
+                               " " + format + " voxels are " + std::to_string(expected) +
+                               " bytes, the file has " + std::to_string(bytes.size()));
+    }
+    grid.values = decode_voxels(bytes, voxel_format);
+    for (size_t i = 0; i < grid.values.size(); ++i) {
+        if (!within_scene_magnitude(grid.values[i])) {
+            const size_t nx = size_t(grid.dims[0]), ny = size_t(grid.dims[1]);
+            fail(file_pointer,
+                 "voxel (" + std::to_string(i % nx) + ", " + std::to_string(i / nx % ny) + ", " +
+                     std::to_string(i / (nx * ny)) + ") of '" + path + "' is " +
+                     std::to_string(grid.values[i]) + ": expected values " + kSceneMagnitudeRule);
+        }
+    }
+    out.scene.voxels.push_back(std::move(grid));
+}
+
+// A transfer ramp: [{"value": v, "color": c, "density": σ}, ...], sorted by value.
+VoxelTransfer SceneParser::parse_transfer(const Json& value, const std::string& pointer) const {
+    const char* expected_stops =
+        "a non-empty array of {\"value\": v, \"color\": c, \"density\": σ} stops sorted by "
+        "value";
+    if (!value.is_array() || value.empty()) {
+        fail(pointer, std::string("expected ") + expected_stops + ", got " + describe(value));
+    }
+    VoxelTransfer transfer;
+    transfer.stops.clear();
+    for (size_t i = 0; i < value.size(); ++i) {
+        const std::string stop_pointer = child(pointer, i);
+        require_object(value[i], stop_pointer,
+                       "a transfer stop {\"value\": v, \"color\": c, \"density\": σ}");
+        check_keys(value[i], stop_pointer, {"value", "color", "density"});
+        TransferStop stop;
+        stop.value = real(require(value[i], stop_pointer, "value", "a number"),
+                          child(stop_pointer, "value"));
+        stop.color = colour(require(value[i], stop_pointer, "color", "a colour"),
+                            child(stop_pointer, "color"));
+        stop.density = real(require(value[i], stop_pointer, "density", "a number >= 0"),
+                            child(stop_pointer, "density"), Bound::NonNegative);
+        if (i > 0 && stop.value < transfer.stops.back().value) {
+            fail(child(stop_pointer, "value"),
+                 "expected stops sorted by value: " + describe(value[i]["value"]) +
+                     " comes after " + describe(value[i - 1]["value"]));
+        }
+        transfer.stops.push_back(stop);
+    }
+    return transfer;
 }
 
 glm::dmat4 SceneParser::parse_transform(const Json& value, const std::string& pointer,

@@ -69,6 +69,9 @@ void check_material_ids(const SceneDescription& d) {
     for (size_t f = 0; f < d.scene.heightfields.size(); ++f) {
         check(d.scene.heightfields[f].material, "heightfield " + std::to_string(f));
     }
+    for (size_t v = 0; v < d.scene.voxels.size(); ++v) {
+        check(d.scene.voxels[v].material, "voxels " + std::to_string(v));
+    }
     const auto texture_count = static_cast<int32_t>(d.shading.textures.size());
     for (const Material& material : d.shading.materials) {
         const MaterialTextures& t = material.textures;

@@ -161,12 +161,7 @@ class BruteForceBinding : public ShapeSurfaceBinding<Sphere> {
             m_all.box.upper = glm::max(m_all.box.upper, b.upper);
         }
         m_data.shapes = m_data.intersectors = &m_all;
-        m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_USER);
-        rtcSetGeometryUserPrimitiveCount(m_geometry, 1);
-        rtcSetGeometryUserData(m_geometry, &m_data);
-        rtcSetGeometryBoundsFunction(m_geometry, user_bounds<AllSpheres>, nullptr);
-        rtcSetGeometryIntersectFunction(m_geometry, user_intersect<AllSpheres>);
-        rtcSetGeometryOccludedFunction(m_geometry, user_occluded<AllSpheres>);
+        m_geometry = new_user_geometry<AllSpheres>(1, &m_data);
     }
 
   private:

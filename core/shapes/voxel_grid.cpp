@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
 namespace rayo {
 namespace {
@@ -170,6 +171,62 @@ void VoxelGrid::surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) co
     out.geometric_normal = length > 0.0f ? hit.normal / length : -ray.direction;
     out.shading_normal = out.geometric_normal;
     out.object_size = max_abs_component(voxel_size());
+}
+
+void VoxelTransfer::operator()(float v, Vec3& colour, float& density) const {
+    // The first stop above v; v at or past the last stop takes the last.
+    const auto above = std::upper_bound(stops.begin(), stops.end(), v,
+                                        [](float x, const TransferStop& s) { return x < s.value; });
+    if (above == stops.begin() || above == stops.end()) {
+        const TransferStop& s = above == stops.begin() ? stops.front() : stops.back();
+        colour = s.color;
+        density = s.density;
+        return;
+    }
+    const TransferStop& a = *(above - 1);
+    const TransferStop& b = *above;
+    const float w = (v - a.value) / (b.value - a.value);  // b.value > v >= a.value
+    colour = a.color + w * (b.color - a.color);
+    density = a.density + w * (b.density - a.density);
+}
+
+Vec3 composite_volumes(const VoxelGrid* const* volumes, size_t count, const Vec3& origin,
+                       const Vec3& direction, float t0, float t1, float& transmittance) {
+    Vec3 colour(0.0f);
+    transmittance = 1.0f;
+    // The grids in order of entry, by repeated selection (scenes hold a few grids: no heap).
+    float previous = -std::numeric_limits<float>::infinity();
+    size_t previous_index = 0;
+    for (size_t taken = 0; taken < count; ++taken) {
+        size_t next = count;
+        float next_entry = std::numeric_limits<float>::infinity();
+        for (size_t i = 0; i < count; ++i) {
+            float t_enter, t_exit;
+            Vec3 n_enter, n_exit;
+            const VoxelGrid& g = *volumes[i];
+            if (!Box{g.lower, g.lower + g.size}.slabs(origin, direction, t_enter, n_enter, t_exit,
+                                                      n_exit) ||
+                !(t_exit > t0) || !(t_enter < t1)) {
+                continue;
+            }
+            // After the previous grid in (entry, index) order, and the first such.
+            const bool after = t_enter > previous || (t_enter == previous && i > previous_index);
+            if (after && (t_enter < next_entry || next == count)) {
+                next = i;
+                next_entry = t_enter;
+            }
+        }
+        if (next == count) break;
+        previous = next_entry;
+        previous_index = next;
+        float t;
+        const Vec3 c =
+            volumes[next]->composite(origin, direction, t0, t1, volumes[next]->transfer, t);
+        colour += transmittance * c;
+        transmittance *= t;
+        if (transmittance < kMinTransmittance) break;
+    }
+    return colour;
 }
 
 void VoxelGrid::parameterization(const Vec3& position, SurfaceHit& out) const {

@@ -1,21 +1,20 @@
 #pragma once
 // Voxel data traced by directional 3-D DDA (seed 004: "voxel data by directional traversal";
-// Amanatides & Woo 1987, core/grid_walk.h). Status: the traversal, the iso-surface, the
-// compositing and the raw decoding, with their tests (tests/core/voxel_grid_test.cpp); not yet
-// reachable from scene files (issue 11 item 5: the JSON `voxels` object, its Embree binding and
-// the shader's compositing are still to do). Values sit at voxel centres and are interpolated
-// trilinearly between them.
-//   - surface: the iso-surface value = threshold. The walk goes over the cells between voxel
-//     centres (the dual grid), skips cells whose eight corner values do not straddle the
-//     threshold, and finds the first root of the trilinear interpolant along the ray in the
-//     first cell that has one (a cubic in t, split at its turning points and bisected: the
-//     trilinear root); the normal is minus the central-difference gradient (outward, toward
-//     lower values).
+// Amanatides & Woo 1987, core/grid_walk.h): the scene file's `voxels` objects (docs/voxels.md).
+// Values sit at voxel centres and are interpolated trilinearly between them. Two modes:
+//   - surface: the iso-surface value = threshold, values above it inside. The walk goes over
+//     the cells between voxel centres (the dual grid), skips cells whose eight corner values do
+//     not straddle the threshold, and finds the first root of the trilinear interpolant along
+//     the ray in the first cell that has one (a cubic in t, split at its turning points and
+//     bisected: the trilinear root); the normal is minus the central-difference gradient
+//     (outward, toward lower values). Traced as Embree user geometry (core/accel.cpp).
 //   - composite: front-to-back emission–absorption along the ray (seed 004's compositing of
-//     colour and opacity): per voxel segment of length Δt with interpolated value v, a transfer
-//     function gives a colour c(v) and an extinction σ(v); α = 1 − exp(−σ·Δt),
+//     colour and opacity): per voxel segment of length Δt with interpolated value v, the
+//     transfer ramp gives a colour c(v) and an extinction σ(v); α = 1 − exp(−σ·Δt),
 //     C += T·α·c, T *= 1 − α. For a constant σ and c this is exactly c·(1 − e^(−σL)) with
-//     transmittance e^(−σL).
+//     transmittance e^(−σL). Not in the Embree scene: the integrator composites every ray's
+//     segment over what lies behind it, C + T·behind (composite_volumes below,
+//     shading/whitted.cpp).
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -41,13 +40,34 @@ std::vector<float> decode_voxels(const std::string& bytes, VoxelFormat format);
 // Stop compositing once the transmittance is below this (the rest adds less than it).
 constexpr float kMinTransmittance = 1e-5f;
 
+enum class VoxelMode { Surface, Composite };
+
+// One stop of a transfer ramp: at value `value`, colour `color` and extinction `density` (per
+// world unit).
+struct TransferStop {
+    float value = 0.0f;
+    Vec3 color{1.0f};
+    float density = 0.0f;
+};
+
+// The composite mode's transfer function: stops sorted by value (equal values make a step),
+// colour and density interpolated linearly in v between neighbouring stops, held constant
+// below the first and above the last.
+struct VoxelTransfer {
+    std::vector<TransferStop> stops{{0.0f, Vec3(1.0f), 0.0f}, {1.0f, Vec3(1.0f), 1.0f}};
+
+    void operator()(float v, Vec3& colour, float& density) const;
+};
+
 struct VoxelGrid {
     int dims[3] = {0, 0, 0};    // voxels along x, y, z (each >= 2)
     std::vector<float> values;  // x fastest, then y, then z
     Vec3 lower{0.0f};           // the grid's box: [lower, lower + size]
     Vec3 size{1.0f};
     float threshold = 0.5f;  // surface: the iso value
-    uint32_t material = 0;
+    uint32_t material = 0;   // surface: the material of the iso-surface
+    VoxelMode mode = VoxelMode::Surface;
+    VoxelTransfer transfer;  // composite: value -> colour and density
 
     float value(int i, int j, int k) const {
         return values[(size_t(k) * size_t(dims[1]) + size_t(j)) * size_t(dims[0]) + size_t(i)];
@@ -73,6 +93,13 @@ struct VoxelGrid {
     Vec3 composite(const Vec3& origin, const Vec3& direction, float t0, float t1,
                    Transfer&& transfer, float& transmittance) const;
 };
+
+// The composite grids `volumes` (count of them) along the ray's segment (t0, t1), each
+// composited front to back and the grids taken in the order the ray enters their boxes:
+// C = C1 + T1·(C2 + T2·(...)); `transmittance` gets T1·T2·…. Overlapping boxes are taken one
+// after the other by entry (an approximation there: docs/voxels.md).
+Vec3 composite_volumes(const VoxelGrid* const* volumes, size_t count, const Vec3& origin,
+                       const Vec3& direction, float t0, float t1, float& transmittance);
 
 template <typename Transfer>
 Vec3 VoxelGrid::composite(const Vec3& origin, const Vec3& direction, float t0, float t1,

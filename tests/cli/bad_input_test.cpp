@@ -348,6 +348,38 @@ TEST_F(BadInputJson, MissingMeshFiles) {
         });
 }
 
+TEST_F(BadInputJson, VoxelFilesAndValues) {
+    write("v.raw", std::string(8, '\x80'));  // 2 × 2 × 2 u8 voxels
+    const auto voxels = [](const std::string& fields) {
+        return with_object(R"({"type": "voxels", "file": "v.raw", "size": [1, 1, 1], )" + fields +
+                           "}");
+    };
+    expect_cases_refused(
+        "bad.json",
+        {
+            {"dims not matching the file", voxels(R"("dims": [2, 2, 3])"),
+             "bad.json#/objects/0/dims", "2 × 2 × 3 u8 voxels are 12 bytes, the file has 8"},
+            {"format not matching the file", voxels(R"("dims": [2, 2, 2], "format": "f32")"),
+             "bad.json#/objects/0/dims", "2 × 2 × 2 f32 voxels are 32 bytes, the file has 8"},
+            {"missing voxel file",
+             with_object(R"({"type": "voxels", "file": "none.raw", "dims": [2, 2, 2],
+                             "size": [1, 1, 1]})"),
+             "bad.json#/objects/0/file",
+             "cannot open voxel file 'none.raw': No such file or directory"},
+            {"dims below 2", voxels(R"("dims": [1, 2, 4])"), "bad.json#/objects/0/dims/0",
+             "expected an integer in [2, 65536], got 1"},
+            {"negative size", with_object(R"({"type": "voxels", "file": "v.raw", "dims": [2, 2, 2],
+                             "size": [1, 1, -2]})"),
+             "bad.json#/objects/0/size/2", "expected a number > 0, got -2"},
+            {"unknown mode", voxels(R"("dims": [2, 2, 2], "mode": "mip")"),
+             "bad.json#/objects/0/mode", "expected one of \"surface\", \"composite\""},
+            {"unsorted transfer", voxels(R"("dims": [2, 2, 2], "mode": "composite",
+                       "transfer": [{"value": 1, "color": 1, "density": 1},
+                                    {"value": 0, "color": 1, "density": 1}])"),
+             "bad.json#/objects/0/transfer/1/value", "expected stops sorted by value"},
+        });
+}
+
 // ---- OBJ (through a JSON scene that references m.obj) ---------------------------------------
 
 const std::string kObjScene = with_object(R"({"type": "mesh", "file": "m.obj"})");

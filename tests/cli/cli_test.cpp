@@ -56,6 +56,20 @@ TEST_F(CliTest, StatsPrintsTheFullTable) {
     EXPECT_NE(r.output.find("rays camera                 768"), std::string::npos) << r.output;
 }
 
+// The example scene's two voxel grids (docs/voxels.md): `rayo info` counts them, the render's
+// --stats counts the surface-mode grid as one primitive beside the floor (the composite grid is
+// not in the Embree scene).
+TEST_F(CliTest, InfoCountsVoxelGrids) {
+    const std::string scene = std::string(RAYO_SCENES_DIR) + "/voxels.json";
+    const CommandResult info = run("info " + scene);
+    EXPECT_EQ(info.exit_code, 0) << info.output;
+    EXPECT_NE(info.output.find("voxel_grids 2\n"), std::string::npos) << info.output;
+    const CommandResult stats = run("render " + scene + " --width 32 --stats -o v.exr");
+    EXPECT_EQ(stats.exit_code, 0) << stats.output;
+    EXPECT_NE(stats.output.find("primitives                  2 ("), std::string::npos)
+        << stats.output;
+}
+
 // A group of a sphere and a triangle placed three times beside a sphere: info and --stats count
 // the instances, the primitives stored (the sphere and the group once) and the instanced total
 // (docs/scene-format.md, "Groups and instances").

@@ -89,6 +89,19 @@ TEST_F(RadiosityCli, WarnsThatGeneralQuadricsAreNotInTheSolve) {
     EXPECT_EQ(none.output.find("no tessellation"), std::string::npos) << none.output;
 }
 
+TEST_F(RadiosityCli, WarnsThatVoxelGridsAreNotInTheSolve) {
+    std::string room = kRoom;
+    room.insert(room.rfind("]}"), R"(, {"type": "voxels", "file": "v.raw", "dims": [2, 2, 2],
+                                      "size": [0.4, 0.4, 0.4], "origin": [-0.2, 0, -0.2]})");
+    write("room.json", room);
+    write("v.raw", std::string(8, '\xff'));
+    const CommandResult r = run("render room.json --gi radiosity -o room.exr");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: radiosity: 1 voxel grid(s) are not in the solve"),
+              std::string::npos)
+        << r.output;
+}
+
 TEST_F(RadiosityCli, BadFlagsAreRefused) {
     const struct {
         const char* args;

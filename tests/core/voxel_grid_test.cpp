@@ -1,6 +1,7 @@
 // Voxel grids (core/shapes/voxel_grid.h): a sphere voxelized here is hit at its radius within a
 // voxel with normals near the sphere's; composite of a constant-density slab equals the closed
-// form; raw decoding of the three formats.
+// form; the transfer ramp; several volumes in the order of entry; raw decoding of the three
+// formats.
 #include "core/shapes/voxel_grid.h"
 
 #include <gtest/gtest.h>
@@ -104,6 +105,66 @@ TEST(VoxelGrid, CompositeOfAConstantSlabIsTheClosedForm) {
                     transmittance);
         EXPECT_NEAR(transmittance, std::exp(-sigma_per_value * 0.6f * 0.25f * length), 1e-5f);
     }
+}
+
+TEST(VoxelGrid, TransferRampInterpolatesLinearlyAndHoldsItsEnds) {
+    VoxelTransfer transfer;
+    transfer.stops = {{0.2f, Vec3(1.0f, 0.0f, 0.0f), 0.0f},
+                      {0.6f, Vec3(0.0f, 1.0f, 0.0f), 4.0f},
+                      {0.6f, Vec3(0.0f, 0.0f, 1.0f), 8.0f},  // a step at 0.6
+                      {1.0f, Vec3(0.0f, 0.0f, 0.0f), 6.0f}};
+    Vec3 c;
+    float sigma;
+    transfer(-3.0f, c, sigma);  // below the first stop: the first
+    rayo_test::expect_vec_near(c, Vec3(1, 0, 0), 0.0);
+    EXPECT_EQ(sigma, 0.0f);
+    transfer(0.3f, c, sigma);  // a quarter of the way from 0.2 to 0.6
+    rayo_test::expect_vec_near(c, Vec3(0.75f, 0.25f, 0.0f), 1e-6);
+    EXPECT_NEAR(sigma, 1.0f, 1e-6f);
+    transfer(0.6f, c, sigma);  // at the step: the later stop
+    rayo_test::expect_vec_near(c, Vec3(0, 0, 1), 0.0);
+    EXPECT_EQ(sigma, 8.0f);
+    transfer(0.9f, c, sigma);
+    rayo_test::expect_vec_near(c, Vec3(0.0f, 0.0f, 0.25f), 1e-6);
+    EXPECT_NEAR(sigma, 6.5f, 1e-5f);
+    transfer(7.0f, c, sigma);  // above the last: the last
+    EXPECT_EQ(sigma, 6.0f);
+    // The default: white, density 0 at 0 to 1 at 1.
+    VoxelTransfer{}(0.25f, c, sigma);
+    rayo_test::expect_vec_near(c, Vec3(1.0f), 0.0);
+    EXPECT_NEAR(sigma, 0.25f, 1e-7f);
+}
+
+// Two constant slabs one behind the other along z, listed back first: composite_volumes takes
+// them in the order the ray enters them, C1 + T1·C2, and skips a grid the segment misses.
+TEST(VoxelGrid, VolumesCompositeInTheOrderTheRayEntersThem) {
+    const auto slab = [](float z0, const Vec3& colour, float density) {
+        VoxelGrid g;
+        g.dims[0] = g.dims[1] = g.dims[2] = 2;
+        g.values.assign(8, 1.0f);
+        g.lower = Vec3(-1.0f, -1.0f, z0);
+        g.size = Vec3(2.0f, 2.0f, 1.0f);
+        g.mode = VoxelMode::Composite;
+        g.transfer.stops = {{0.0f, colour, density}};
+        return g;
+    };
+    const VoxelGrid back = slab(-3.0f, Vec3(0.0f, 0.0f, 1.0f), 2.0f);
+    const VoxelGrid front = slab(0.0f, Vec3(1.0f, 0.0f, 0.0f), 0.5f);
+    VoxelGrid moved = slab(0.0f, Vec3(0.0f, 1.0f, 0.0f), 50.0f);
+    moved.lower.x = 5.0f;  // beside the ray
+    const VoxelGrid* volumes[3] = {&back, &moved, &front};
+    const Vec3 origin(0.0f, 0.0f, 5.0f), d(0.0f, 0.0f, -1.0f);
+    float t;
+    const Vec3 colour = composite_volumes(volumes, 3, origin, d, 0.0f, 100.0f, t);
+    const float t1 = std::exp(-0.5f), t2 = std::exp(-2.0f);
+    rayo_test::expect_vec_near(colour, Vec3(1.0f - t1, 0.0f, t1 * (1.0f - t2)), 1e-5);
+    EXPECT_NEAR(t, t1 * t2, 1e-6f);
+    // A segment that ends before the back slab sees the front one alone.
+    composite_volumes(volumes, 3, origin, d, 0.0f, 7.0f, t);
+    EXPECT_NEAR(t, t1, 1e-6f);
+    // None: all light through.
+    EXPECT_EQ(composite_volumes(volumes, 0, origin, d, 0.0f, 100.0f, t), Vec3(0.0f));
+    EXPECT_EQ(t, 1.0f);
 }
 
 TEST(VoxelGrid, RawFormatsDecode) {

@@ -8,9 +8,10 @@
 
 namespace rayo {
 
-inline std::string json_error_of(const std::string& text, const std::string& name = "s.json") {
+inline std::string json_error_of(const std::string& text, const std::string& name = "s.json",
+                                 const std::string& dir = ".") {
     try {
-        load_json_string(text, name, ".");
+        load_json_string(text, name, dir);
     } catch (const InputError& e) {
         return e.what();
     }
