@@ -16,9 +16,10 @@ float distance_to(const Bounds3& b, const Vec3& eye) {
     return glm::length(glm::clamp(eye, b.lower, b.upper) - eye);
 }
 
+// `mesh_bytes`: the scene's mesh forms so far (auto's memory budget).
 template <typename S>
 void choose(const S& shape, uint32_t index, ShapeMethod requested, const SceneDescription& d,
-            const Camera& camera, ShapeMethodChoice& choice, MeshForm& form) {
+            const Camera& camera, size_t mesh_bytes, ShapeMethodChoice& choice, MeshForm& form) {
     choice.type = S::kName;
     choice.index = index;
     choice.requested = requested;
@@ -31,9 +32,15 @@ void choose(const S& shape, uint32_t index, ShapeMethod requested, const SceneDe
     const float pixel_angle = camera.pixel_angle();
     const float distance = distance_to(shape.bounds(), camera.desc().eye);
     std::ostringstream reason;
-    if (!(distance > 0.0f) && requested == ShapeMethod::Auto) {
-        choice.reason = "analytic: the camera is inside its bounds, no mesh is within the budget";
-        return;
+    if (requested == ShapeMethod::Auto) {
+        if (!auto_may_mesh<S>()) {
+            choice.reason = "analytic: its own intersection is as fast as a mesh";
+            return;
+        }
+        if (!(distance > 0.0f)) {
+            choice.reason = "analytic: the camera is inside its bounds, no mesh is within budget";
+            return;
+        }
     }
     // Inside the bounds an explicit mesh takes the budget at the bounds' size: as fine as the
     // cells allow, its reported error says what that reaches.
@@ -58,9 +65,9 @@ void choose(const S& shape, uint32_t index, ShapeMethod requested, const SceneDe
     } else if (choice.triangles > kAutoMeshMaxTriangles) {
         reason << "analytic: the mesh within " << budget_px << " px needs " << choice.triangles
                << " triangles (> " << kAutoMeshMaxTriangles << ": slower than analytic)";
-    } else if (choice.bytes > kAutoMeshMaxBytes) {
-        reason << "analytic: the mesh within " << budget_px << " px needs " << choice.bytes
-               << " bytes (> " << kAutoMeshMaxBytes << ")";
+    } else if (mesh_bytes + choice.bytes > kAutoMeshSceneBytes) {
+        reason << "analytic: the scene's mesh forms would pass " << (kAutoMeshSceneBytes >> 20)
+               << " MB";
     } else {
         choice.chosen = ShapeMethod::Mesh;
         reason << "mesh: " << choice.triangles << " triangles (<= " << kAutoMeshMaxTriangles
@@ -81,6 +88,7 @@ ShapeChoices choose_shape_methods(const SceneDescription& d, const Camera& camer
     // Per registered type, which of its objects become meshes, and those meshes.
     std::vector<std::vector<bool>> meshed(AnalyticShapes::kCount);
     std::vector<TriangleMesh> forms;
+    size_t mesh_bytes = 0;
     d.scene.shapes.for_each([&](const auto& shapes) {
         using S = ShapeOf<decltype(shapes)>;
         constexpr uint32_t type = Shapes::index_of<S>();
@@ -95,8 +103,9 @@ ShapeChoices choose_shape_methods(const SceneDescription& d, const Camera& camer
             if (!method || !has_mesh_form(shape)) continue;
             ShapeMethodChoice choice;
             MeshForm form;
-            choose(shape, i, *method, d, camera, choice, form);
+            choose(shape, i, *method, d, camera, mesh_bytes, choice, form);
             if (choice.chosen == ShapeMethod::Mesh) {
+                mesh_bytes += choice.bytes;
                 form.mesh.name = std::string(S::kName) + " " + std::to_string(i);
                 forms.push_back(std::move(form.mesh));
                 meshed[type][i] = true;

@@ -5,6 +5,7 @@
 // picks per object from the budget and the measured costs (docs/shape-methods.md).
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "apps/scene/scene_description.h"
@@ -36,14 +37,25 @@ struct ShapeChoices {
     const Scene& traced(const Scene& loaded) const { return scene ? *scene : loaded; }
 };
 
-// The measurements behind auto (docs/shape-methods.md, `rayo bench accuracy --only shapes`):
-// Embree bytes per triangle of a mesh form (vertex, normal and index buffers and the BVH), and
-// auto's limits: a mesh form is taken when it has at most kAutoMeshMaxTriangles triangles (below
-// that, triangles traced faster than the analytic code in every shape's study) and at most
-// kAutoMeshMaxBytes.
-constexpr size_t kMeshBytesPerTriangle = 160;
-constexpr size_t kAutoMeshMaxTriangles = 2048;
-constexpr size_t kAutoMeshMaxBytes = size_t(1) << 20;
+// The measurements behind auto (docs/shape-methods.md, `rayo bench accuracy --only shapes`, one
+// thread): the clipped-quadric forms (ellipsoid, cylinder, paraboloid, hyperboloid: a general
+// quadric clipped to a box, core/shapes/clipped_quadric.h) cost 34–42 ns per coherent camera ray
+// analytically against 13–27 ns as meshes of up to 15,000 triangles, and single rays cost about
+// the same both ways up to some 4,000 triangles; the cone's, disk's and box's own code (15–22 ns)
+// is as fast as their meshes on camera rays and faster on single rays. So auto takes the mesh
+// form of a clipped quadric when it has at most kAutoMeshMaxTriangles triangles, while the
+// scene's mesh forms stay within kAutoMeshSceneBytes (objects met after that stay analytic), and
+// keeps the other shapes analytic. Embree takes about kMeshBytesPerTriangle per triangle of a
+// mesh form (82–120 measured, BVH and buffers) against 1152 bytes for an analytic object.
+constexpr size_t kMeshBytesPerTriangle = 100;
+constexpr size_t kAutoMeshMaxTriangles = 4096;
+constexpr size_t kAutoMeshSceneBytes = size_t(64) << 20;
+
+// Whether auto may take a shape's mesh form: the clipped quadrics (above).
+template <typename S>
+constexpr bool auto_may_mesh() {
+    return std::is_same_v<typename ShapeTraits<S>::Intersector, ClippedQuadric>;
+}
 
 // The world-space chord error `max_error_px` allows at `distance` from the eye.
 inline float chord_budget(float max_error_px, float pixel_angle, float distance) {

@@ -36,7 +36,7 @@ const std::vector<double>& shape_method_budgets();
 
 // `repeats`: timing runs per form (the best is kept).
 std::vector<ShapeMethodRow> run_shape_method_study(std::ostream& progress, int size,
-                                                   int repeats = 5);
+                                                   int repeats = 7);
 
 void write_shape_method_csv(std::ostream& out, const std::vector<ShapeMethodRow>& rows);
 

@@ -18,8 +18,9 @@ constexpr uint32_t kMeshFormMaxCells = 1024;
 
 struct MeshForm {
     TriangleMesh mesh;
-    // The largest chord error over its triangles (TessellatedMesh::bulge), world units: at most
-    // about max_chord unless kMeshFormMaxCells stopped the refinement.
+    // Its chord error, world units: the largest of the triangles' bulges
+    // (TessellatedMesh::bulge) and the pieces' grid chord errors (grid_chord_error, which sees a
+    // rim's polygon); at most about max_chord unless kMeshFormMaxCells stopped the refinement.
     float chord = 0.0f;
 };
 
