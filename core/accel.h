@@ -1,8 +1,14 @@
 #pragma once
-// The Embree acceleration structure: one committed RTCScene per render holding every registered
-// shape type (core/shapes/registry.h) as Embree user geometry running rayo's own intersection
-// code, and the meshes as Embree triangles. Follows the Embree 3 call order: device (one per
-// process, core/embree_device.h) -> scene -> geometries -> commit, then trace.
+// The Embree acceleration structure: one committed RTCScene per render. Each registered shape
+// type (core/shapes/registry.h) becomes one geometry in the representation make_binding picks
+// (core/user_geometry.h): Embree user geometry running rayo's own intersection code, or for
+// spheres the representation of AccelOptions::spheres (Embree points, icosphere triangles, one
+// brute-force primitive; core/sphere_method.h). The meshes are Embree triangles (the mesh forms
+// of shapes traced as meshes among them, apps/scene/shape_method_choice.h), height fields of the
+// `dda` method user geometry walking their grid, and each instanced group a scene of its own
+// built once, placed by Embree instance geometries (core/instance_binding.h). Follows the Embree
+// 3 call order: device (one per process, core/embree_device.h) -> scene -> geometries -> commit,
+// then trace.
 #include <embree3/rtcore.h>
 
 #include <memory>

@@ -770,6 +770,7 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
     for (const auto& [name, count] : d.scene.shape_counts()) out << name << " " << count << "\n";
     out << "meshes " << d.scene.meshes.size() << "\n"
         << "triangles " << d.scene.triangle_count() << "\n"
+        << "heightfields " << d.scene.heightfields.size() << "\n"
         << "materials " << d.shading.materials.size() << "\n"
         << "lights " << d.shading.lights.size() << "\n"
         << "skipped_triangles " << d.skipped_triangles << "\n";

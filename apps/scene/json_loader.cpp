@@ -532,16 +532,18 @@ class SceneParser {
         const std::string where = child(pointer, "method");
         const std::string method = choice(*v, where, {"analytic", "mesh", "auto"});
         if constexpr (std::is_same_v<S, Sphere>) {
-            fail(where, "a sphere's method is the render's: \"render\": {\"sphere_method\": ...} "
-                        "or --sphere-method (docs/sphere-methods.md)");
+            fail(where,
+                 "a sphere's method is the render's: \"render\": {\"sphere_method\": ...} "
+                 "or --sphere-method (docs/sphere-methods.md)");
         }
         if (!has_mesh_form(shapes.back())) {
             fail(where, std::string("a ") + S::kName +
                             " has no mesh form (no pieces): it is traced analytically only");
         }
         if (in_group) {
-            fail(where, "objects in groups are traced analytically: their size in pixels "
-                        "depends on every instance (give \"method\" to top-level objects)");
+            fail(where,
+                 "objects in groups are traced analytically: their size in pixels "
+                 "depends on every instance (give \"method\" to top-level objects)");
         }
         out.shape_methods.push_back({Shapes::index_of<S>(),
                                      static_cast<uint32_t>(shapes.size() - 1),

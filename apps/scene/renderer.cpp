@@ -126,8 +126,8 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     std::unique_ptr<RadiosityField> radiosity;
     if (description.settings.gi == GlobalIllumination::Radiosity) {
         const RadiositySettings& rs = description.settings.radiosity;
-        radiosity = std::make_unique<RadiosityField>(scene,
-                                                     description.shading.materials, rs.patch_size);
+        radiosity =
+            std::make_unique<RadiosityField>(scene, description.shading.materials, rs.patch_size);
         result.radiosity = true;
         result.radiosity_patches = radiosity->patches().size();
         // The bar follows the unshot energy on a log scale, from 1 down to the threshold.

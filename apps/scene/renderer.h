@@ -21,9 +21,9 @@ struct RenderResult {
     size_t instances = 0;          // Embree instances (core/instance.h)
     size_t stored_primitives = 0;  // each instanced group's primitives once
     int threads = 0;
-    SphereChoice spheres;   // the sphere method and math that ran, and why
+    SphereChoice spheres;                   // the sphere method and math that ran, and why
     std::vector<ShapeMethodChoice> shapes;  // the objects' methods, where not analytic by default
-    bool coherent = false;  // camera/shadow rays traced as per-tile Embree streams
+    bool coherent = false;                  // camera/shadow rays traced as per-tile Embree streams
     // The radiosity pre-pass, when render.gi is "radiosity" (docs/radiosity.md).
     bool radiosity = false;
     size_t radiosity_patches = 0;

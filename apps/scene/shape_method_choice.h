@@ -15,7 +15,7 @@ namespace rayo {
 
 // What one object ran as, and why.
 struct ShapeMethodChoice {
-    std::string type;  // its scene-file name ("cylinder")
+    std::string type;    // its scene-file name ("cylinder")
     uint32_t index = 0;  // among Scene::shapes of its type
     ShapeMethod requested = ShapeMethod::Analytic;
     ShapeMethod chosen = ShapeMethod::Analytic;

@@ -149,8 +149,7 @@ const std::vector<double>& shape_method_budgets() {
     return budgets;
 }
 
-std::vector<ShapeMethodRow> run_shape_method_study(std::ostream& progress, int size,
-                                                   int repeats) {
+std::vector<ShapeMethodRow> run_shape_method_study(std::ostream& progress, int size, int repeats) {
     // One thread: per-ray costs without TBB's share of the 2 cores.
     tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
     std::vector<ShapeMethodRow> rows;
@@ -203,18 +202,18 @@ std::vector<ShapeMethodRow> run_shape_method_study(std::ostream& progress, int s
                     const double separation =
                         std::abs(double(m.t) - double(a.t)) *
                         std::abs(double(glm::dot(rays[i].direction, m.geometric_normal)));
-                    row.max_error_px = std::max(
-                        row.max_error_px, separation / (double(a.t) * camera.pixel_angle()));
+                    row.max_error_px = std::max(row.max_error_px,
+                                                separation / (double(a.t) * camera.pixel_angle()));
                 }
                 row.silhouette_pct = 100.0 * double(silhouette) / double(rays.size());
             }
             progress << "  " << std::setw(12) << std::left << name << std::setw(9) << row.form
                      << std::right << std::fixed << std::setprecision(4) << std::setw(7)
                      << row.budget_px << " px " << std::setw(8) << row.triangles << " tris "
-                     << std::setw(9) << row.bytes << " B " << std::setprecision(1)
-                     << std::setw(7) << row.ns_coherent << " / " << std::setw(7)
-                     << row.ns_single << " ns/ray  error " << std::setprecision(3)
-                     << row.max_error_px << " px  silhouette " << row.silhouette_pct << "%"
+                     << std::setw(9) << row.bytes << " B " << std::setprecision(1) << std::setw(7)
+                     << row.ns_coherent << " / " << std::setw(7) << row.ns_single
+                     << " ns/ray  error " << std::setprecision(3) << row.max_error_px
+                     << " px  silhouette " << row.silhouette_pct << "%"
                      << (row.is_auto ? "  <- auto" : "") << "\n";
             rows.push_back(row);
         }
@@ -228,9 +227,9 @@ void write_shape_method_csv(std::ostream& out, const std::vector<ShapeMethodRow>
     out << std::setprecision(9);
     for (const ShapeMethodRow& r : rows) {
         out << csv_field(r.shape) << "," << r.form << "," << r.budget_px << ","
-            << (r.is_auto ? 1 : 0) << "," << r.triangles << "," << r.bytes << ","
-            << r.build_seconds << "," << r.ns_coherent << "," << r.ns_single << "," << r.chord_px
-            << "," << r.max_error_px << "," << r.silhouette_pct << "\n";
+            << (r.is_auto ? 1 : 0) << "," << r.triangles << "," << r.bytes << "," << r.build_seconds
+            << "," << r.ns_coherent << "," << r.ns_single << "," << r.chord_px << ","
+            << r.max_error_px << "," << r.silhouette_pct << "\n";
     }
 }
 
@@ -303,8 +302,8 @@ void run_shape_method_bench(const std::string& dir, std::ostream& progress, int 
                    << "set title 'Shape methods: " << chart.name
                    << " against error (lines: meshes at 4 .. 1/16 px budgets; flat: analytic)'\n"
                    << "set ylabel '" << chart.ylabel << "'\n"
-                   << "plot for [i=0:" << blocks - 1 << "] '" << dat << "' index i using 1:"
-                   << chart.column
+                   << "plot for [i=0:" << blocks - 1 << "] '" << dat
+                   << "' index i using 1:" << chart.column
                    << " with linespoints lc (i/2+1) title columnheader(1)\n";
             }
         }

@@ -14,11 +14,11 @@ namespace rayo {
 
 struct ShapeMethodRow {
     std::string shape;
-    std::string form;         // "analytic" or "mesh"
-    double budget_px = 0.0;   // the mesh's --max-error-px (0 for analytic)
-    bool is_auto = false;     // what auto picks at the default budget (0.5 px)
+    std::string form;        // "analytic" or "mesh"
+    double budget_px = 0.0;  // the mesh's --max-error-px (0 for analytic)
+    bool is_auto = false;    // what auto picks at the default budget (0.5 px)
     size_t triangles = 0;
-    size_t bytes = 0;         // Embree's, from its memory monitor
+    size_t bytes = 0;             // Embree's, from its memory monitor
     double build_seconds = 0.0;   // choice and tessellation + BVH build
     double ns_coherent = 0.0;     // per camera ray, 8×8 streams (the renderer's camera path)
     double ns_single = 0.0;       // per camera ray, one at a time (the secondary rays' path)

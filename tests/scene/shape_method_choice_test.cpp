@@ -59,8 +59,8 @@ void expect_mesh_within_budget(const S& shape, float budget_px) {
     ASSERT_EQ(choices.scene->meshes.size(), 1u);
     const Accel mesh(*choices.scene);
     const Bounds3 b = shape.bounds();
-    const float nearest = glm::length(glm::clamp(camera.desc().eye, b.lower, b.upper) -
-                                      camera.desc().eye);
+    const float nearest =
+        glm::length(glm::clamp(camera.desc().eye, b.lower, b.upper) - camera.desc().eye);
     const float chord = chord_budget(budget_px, camera.pixel_angle(), nearest);
     int both = 0, one = 0;
     for (int y = 0; y < camera.height(); ++y) {
