@@ -89,7 +89,8 @@ TEST_F(CliTest, ShapeMethodsInStatsAndInfo) {
     write("shapes.json", R"({"rayo": 1, "camera": {"width": 32, "height": 24, "eye": [0, 1, 6]},
         "textures": {"hills": {"type": "perlin"}},
         "objects": [{"type": "cylinder", "base": [-1, -1, 0], "top": [-1, 1, 0], "radius": 0.5},
-                    {"type": "cone", "base": [1, -1, 0], "apex": [1, 1, 0], "apex_radius": 0,
+                    {"type": "cone", "base": [1, -1, 0], "base_radius": 0.5, "apex": [1, 1, 0],
+                     "apex_radius": 0,
                      "method": "mesh"},
                     {"type": "heightfield", "texture": "hills", "size": [4, 0.2, 4],
                      "origin": [-2, -2, -2], "method": "dda"}]})");
