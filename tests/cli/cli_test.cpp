@@ -104,7 +104,7 @@ TEST_F(CliTest, ShapeMethodsInStatsAndInfo) {
     EXPECT_NE(r.output.find("shape method                cone 0 (mesh): mesh, as requested"),
               std::string::npos)
         << r.output;
-    EXPECT_EQ(r.output.find("cylinder"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("shape method                cylinder"), std::string::npos) << r.output;
     r = run("render shapes.json --stats --shape-method auto -o s.exr");
     EXPECT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("shape method                cylinder: 1 mesh ("), std::string::npos)

@@ -147,7 +147,9 @@ TEST(AccuracyBenchCommand, WritesCsvAndChartsForEveryScene) {
             EXPECT_LE(error, budget) << line;
             // The chord error reported; the paraboloid's side chords at its vertex fall only as
             // n^-1/2 on its height-uniform grid and stop short at kMeshFormMaxCells.
-            if (f[0] != "paraboloid") EXPECT_LE(std::stod(f[9]), budget) << line;
+            if (f[0] != "paraboloid") {
+                EXPECT_LE(std::stod(f[9]), budget) << line;
+            }
         }
     }
     const int shapes = static_cast<int>(shape_method_scenes(16).size());
