@@ -1,8 +1,14 @@
 #pragma once
-// The Embree acceleration structure: one committed RTCScene per render holding every registered
-// shape type (core/shapes/registry.h) as Embree user geometry running rayo's own intersection
-// code, and the meshes as Embree triangles; height fields and surface-mode voxel grids as one
-// user primitive each. Follows the Embree 3 call order: device (one per process,
+// The Embree acceleration structure: one committed RTCScene per render. Each registered shape
+// type (core/shapes/registry.h) becomes one geometry in the representation make_binding picks
+// (core/user_geometry.h): Embree user geometry running rayo's own intersection code, or for
+// spheres the representation of AccelOptions::spheres (Embree points, icosphere triangles, one
+// brute-force primitive; core/sphere_method.h). The meshes are Embree triangles (the mesh forms
+// of shapes traced as meshes among them, apps/scene/shape_method_choice.h); height fields of the
+// `dda` method and surface-mode voxel grids are user geometry walking their grid; composite-mode
+// voxel grids are not in Embree (volumes(), composited by the integrator); each instanced group
+// is a scene of its own built once, placed by Embree instance geometries
+// (core/instance_binding.h). Follows the Embree 3 call order: device (one per process,
 // core/embree_device.h) -> scene -> geometries -> commit, then trace.
 #include <embree3/rtcore.h>
 

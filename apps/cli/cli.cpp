@@ -30,6 +30,7 @@
 #include "apps/scene/renderer.h"
 #include "apps/scene/scene_loader.h"
 #include "bench/lab/accuracy_bench.h"
+#include "bench/lab/shape_methods_study.h"
 #include "bench/lab/spd_suite.h"
 #include "core/error.h"
 #include "core/image/image_output.h"
@@ -55,9 +56,9 @@ usage:
   rayo render [SCENE] [options]   render SCENE (.json or .nff, or an .obj, .gltf or .glb model,
                                   framed automatically); the built-in scene without one
   rayo info SCENE                 load SCENE and print what it contains
-  rayo bench accuracy -o DIR [--size N]
-                                  the sphere-method study: CSV and charts (gnuplot) in DIR,
-                                  scenes of N×N pixels [384]
+  rayo bench accuracy -o DIR [--size N] [--only spheres|shapes]
+                                  the sphere- and shape-method studies: CSV and charts
+                                  (gnuplot) in DIR, scenes of N×N pixels [384]
   rayo bench suite [options]      the seven SPD scenes as a benchmark: a table, and with -o DIR
                                   suite.csv/.json/.md and a chart (docs/performance.md)
   rayo texture NAME [options]     write a procedural texture flat (the plane z = 0)
@@ -83,7 +84,11 @@ render options:
   --sphere-method M        auto (default), user, bruteforce, embree-point, mesh:N (N 0..7:
                            20·4^N triangles per sphere)
   --sphere-math P          stable (default), seed (seed 000's algebraic form), double
-  --max-error-px E         auto's error budget in pixels [0.5]
+  --max-error-px E         auto's error budget in pixels [0.5]; the chord error of mesh
+                           shapes (--shape-method)
+  --shape-method M         analytic, mesh or auto: the method of every object with a mesh
+                           form (not spheres), over the scene's per-object "method"
+                           [each object's, default analytic; docs/shape-methods.md]
   --flat-spheres           mesh:N spheres with flat facets instead of smooth normals
   --single-rays            trace camera and shadow rays one by one instead of as coherent
                            Embree streams per tile (same image; for comparisons)
@@ -221,6 +226,7 @@ struct RenderArgs {
     std::optional<SphereMath> sphere_math;
     std::optional<SphereRepresentation> sphere_method;
     std::optional<float> max_error_px;
+    std::optional<ShapeMethod> shape_method;
     std::optional<AntiAliasing> aa;
     std::optional<float> aa_threshold;
     std::optional<int> aa_depth;
@@ -279,6 +285,12 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             }
         } else if (a == "--max-error-px") {
             r.max_error_px = static_cast<float>(parse_number(a, cursor.value(), 1e-6, 1e6));
+        } else if (a == "--shape-method") {
+            const std::string& m = cursor.value();
+            r.shape_method = parse_shape_method(m);
+            if (!r.shape_method) {
+                throw UsageError(a + ": expected 'analytic', 'mesh' or 'auto', got '" + m + "'");
+            }
         } else if (a == "--aa") {
             const std::string& m = cursor.value();
             if (m == "stratified") {
@@ -397,6 +409,7 @@ void apply_overrides(const RenderArgs& args, SceneDescription& d) {
     if (args.flat_spheres) d.settings.spheres.mesh_smooth = false;
     if (args.single_rays) d.settings.coherent = false;
     if (args.max_error_px) d.settings.max_error_px = *args.max_error_px;
+    if (args.shape_method) d.settings.shape_method = *args.shape_method;
     if (args.aa) d.settings.aa = *args.aa;
     if (args.aa_threshold) d.settings.adaptive.threshold = *args.aa_threshold;
     if (args.aa_depth) d.settings.adaptive.depth = *args.aa_depth;
@@ -497,6 +510,7 @@ RenderFingerprint render_fingerprint(const RenderArgs& args, const SceneDescript
         {"gi", s.gi == GlobalIllumination::Radiosity ? "radiosity" : "none"},
         {"gi view", s.gi_view_patches ? "patches" : "smooth"},
         {"nff light intensity", light.str()},
+        {"shape method", s.shape_method ? shape_method_name(*s.shape_method) : "per object"},
         {"shadow terminator", s.whitted.terminator_offset ? "offset" : "none"},
         {"model framing", framing.str()},
     };
@@ -548,6 +562,9 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "\n"
         << "  primitives                  " << r.primitives << " (" << shape_summary(d.scene)
         << ")\n";
+    for (const std::string& line : shape_method_lines(r.shapes)) {
+        out << "  shape method                " << line << "\n";
+    }
     if (r.instances > 0) {
         out << "  instances                   " << r.instances << " of " << d.scene.groups.size()
             << " group(s): " << r.stored_primitives << " primitives stored, "
@@ -1005,6 +1022,7 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
         << "triangles " << d.scene.triangle_count() << "\n"
         << "vertices " << vertex_count(d.scene) << "\n"
         << "voxel_grids " << d.scene.voxels.size() << "\n"
+        << "heightfields " << d.scene.heightfields.size() << "\n"
         << "materials " << d.shading.materials.size() << "\n"
         << "lights " << d.shading.lights.size() << "\n"
         << "skipped_triangles " << d.skipped_triangles << "\n";
@@ -1072,6 +1090,7 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
     }
     std::optional<std::string> dir;
     int size = kAccuracyImageSize;
+    std::string only;  // "spheres", "shapes" or both
     ArgCursor cursor(args);
     cursor.next();  // "accuracy"
     while (cursor.next()) {
@@ -1080,12 +1099,19 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
             dir = cursor.value();
         } else if (a == "--size") {
             size = parse_int(a, cursor.value(), 16, 4096);
+        } else if (a == "--only") {
+            const std::string& m = cursor.value();
+            if (m != "spheres" && m != "shapes") {
+                throw UsageError(a + ": expected 'spheres' or 'shapes', got '" + m + "'");
+            }
+            only = m;
         } else {
             throw UsageError("bench accuracy: unknown option '" + a + "'");
         }
     }
     if (!dir) throw UsageError("bench accuracy: -o DIR is required");
-    run_accuracy_bench(*dir, out, size);
+    if (only != "shapes") run_accuracy_bench(*dir, out, size);
+    if (only != "spheres") run_shape_method_bench(*dir, out, size);
     return 0;
 }
 

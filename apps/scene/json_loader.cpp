@@ -18,6 +18,7 @@
 #include "core/error.h"
 #include "core/path_util.h"
 #include "core/scene_limits.h"
+#include "core/shapes/mesh_form.h"
 #include "shading/texture.h"
 
 namespace rayo {
@@ -527,15 +528,48 @@ class SceneParser {
         return record;
     }
 
+    // A shape; `object` for the scene's and groups' objects, which may name a "method" (CSG
+    // children may not).
     template <typename S>
-    void parse_shape(const Json& value, const std::string& pointer, std::vector<S>& out) const {
-        S shape = read_record<S>(value, pointer, {"type", "material"});
+    void parse_shape(const Json& value, const std::string& pointer, std::vector<S>& out,
+                     bool object = false) const {
+        S shape = read_record<S>(value, pointer,
+                                 object ? std::vector<std::string>{"type", "material", "method"}
+                                        : std::vector<std::string>{"type", "material"});
         shape.material = material_of(value, pointer);
         out.push_back(std::move(shape));
     }
+    // The "method" of the object just read into `shapes` (core/shape_method.h).
+    template <typename S>
+    void read_shape_method(const Json& value, const std::string& pointer,
+                           const std::vector<S>& shapes, bool in_group,
+                           SceneDescription& out) const {
+        const Json* v = find(value, "method");
+        if (!v) return;
+        const std::string where = child(pointer, "method");
+        const std::string method = choice(*v, where, {"analytic", "mesh", "auto"});
+        if constexpr (std::is_same_v<S, Sphere>) {
+            fail(where,
+                 "a sphere's method is the render's: \"render\": {\"sphere_method\": ...} "
+                 "or --sphere-method (docs/sphere-methods.md)");
+        }
+        if (!has_mesh_form(shapes.back())) {
+            fail(where, std::string("a ") + S::kName +
+                            " has no mesh form (no pieces): it is traced analytically only");
+        }
+        if (in_group) {
+            fail(where,
+                 "objects in groups are traced analytically: their size in pixels "
+                 "depends on every instance (give \"method\" to top-level objects)");
+        }
+        out.shape_methods.push_back({Shapes::index_of<S>(),
+                                     static_cast<uint32_t>(shapes.size() - 1),
+                                     *parse_shape_method(method)});
+    }
 
     // A CSG object (core/shapes/csg.h): its tree, read into one Csg.
-    void parse_shape(const Json& value, const std::string& pointer, std::vector<Csg>& out) const {
+    void parse_shape(const Json& value, const std::string& pointer, std::vector<Csg>& out,
+                     bool /*object*/ = false) const {
         Csg csg;
         parse_csg_operation(value, pointer, 1, csg);
         csg.material = material_of(value, pointer);
@@ -1288,7 +1322,8 @@ void SceneParser::parse_object(const Json& value, const std::string& pointer, Sc
     bool shape_read = false;
     sink.shapes.for_each([&](auto& shapes) {
         if (type == ShapeOf<decltype(shapes)>::kName) {
-            parse_shape(value, pointer, shapes);
+            parse_shape(value, pointer, shapes, true);
+            read_shape_method(value, pointer, shapes, sink.in_group, out);
             shape_read = true;
         }
     });

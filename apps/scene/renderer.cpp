@@ -109,14 +109,19 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
 
     auto start = std::chrono::steady_clock::now();
     result.spheres = choose_sphere_method(description, camera);
+    // Objects with a mesh form, analytic or as triangles (docs/shape-methods.md): `scene` is the
+    // loaded one unless some became meshes.
+    ShapeChoices shape_choices = choose_shape_methods(description, camera);
+    const Scene& scene = shape_choices.traced(description.scene);
     AccelOptions accel_options;
     accel_options.spheres = result.spheres.spheres;
     accel_options.sphere_math = result.spheres.math;
-    const Accel accel(description.scene, accel_options);
+    const Accel accel(scene, accel_options);
     result.bvh_seconds = seconds_since(start);
     result.primitives = accel.primitive_count();
     result.instances = accel.instance_count();
     result.stored_primitives = accel.stored_primitive_count();
+    result.shapes = std::move(shape_choices.objects);
 
     // Radiosity (seed 004), the first of two passes: the patches of the meshes and of the
     // tessellated analytic shapes exchange light through the accel's occlusion rays; the second
@@ -125,8 +130,8 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     std::unique_ptr<RadiosityField> radiosity;
     if (description.settings.gi == GlobalIllumination::Radiosity) {
         const RadiositySettings& rs = description.settings.radiosity;
-        radiosity = std::make_unique<RadiosityField>(description.scene,
-                                                     description.shading.materials, rs.patch_size);
+        radiosity =
+            std::make_unique<RadiosityField>(scene, description.shading.materials, rs.patch_size);
         result.radiosity = true;
         result.radiosity_patches = radiosity->patches().size();
         // The bar follows the unshot energy on a log scale, from 1 down to the threshold.

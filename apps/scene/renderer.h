@@ -3,6 +3,7 @@
 // in the TBB tile loop, into an in-memory film or a caller's tile sink. Returns the film (when
 // it was used), ray counts and phase times.
 #include "apps/scene/scene_description.h"
+#include "apps/scene/shape_method_choice.h"
 #include "apps/scene/sphere_method_choice.h"
 #include "core/film.h"
 #include "core/stats.h"
@@ -20,8 +21,9 @@ struct RenderResult {
     size_t instances = 0;          // Embree instances (core/instance.h)
     size_t stored_primitives = 0;  // each instanced group's primitives once
     int threads = 0;
-    SphereChoice spheres;   // the sphere method and math that ran, and why
-    bool coherent = false;  // camera/shadow rays traced as per-tile Embree streams
+    SphereChoice spheres;                   // the sphere method and math that ran, and why
+    std::vector<ShapeMethodChoice> shapes;  // the objects' methods, where not analytic by default
+    bool coherent = false;                  // camera/shadow rays traced as per-tile Embree streams
     // The radiosity pre-pass, when render.gi is "radiosity" (docs/radiosity.md).
     bool radiosity = false;
     size_t radiosity_patches = 0;

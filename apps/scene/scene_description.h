@@ -7,6 +7,7 @@
 
 #include "core/adaptive_aa.h"
 #include "core/scene.h"
+#include "core/shape_method.h"
 #include "core/sphere_method.h"
 #include "core/tile_grid.h"
 #include "shading/radiosity.h"
@@ -25,6 +26,9 @@ struct RenderSettings {
     SphereMath sphere_math = SphereMath::Stable;
     SphereRepresentation spheres{SphereMethod::Auto};  // --sphere-method; auto by default
     float max_error_px = 0.5f;                         // auto's error budget, in pixels
+    // --shape-method: the method of every object with a mesh form, over the file's "method"s
+    // (apps/scene/shape_method_choice.h); none: each object's own, analytic by default.
+    std::optional<ShapeMethod> shape_method;
     bool coherent = true;  // tiles' camera and shadow rays as Embree streams (--single-rays: no)
     AntiAliasing aa = AntiAliasing::Stratified;  // "aa": stratified spp, or adaptive
     AdaptiveSettings adaptive;                   // "aa_threshold", "aa_depth"
@@ -43,6 +47,8 @@ struct SceneDescription {
     // each "where: what"; the CLI prints them. skipped_triangles counts the triangles they held.
     std::vector<std::string> warnings;
     size_t skipped_triangles = 0;
+    // The "method" of top-level objects that name one (objects without stay analytic).
+    std::vector<ShapeMethodRequest> shape_methods;
 };
 
 }  // namespace rayo

@@ -214,6 +214,10 @@ void tessellate(const SurfacePieces& pieces, const TessellationOptions& options,
     }
 }
 
+double grid_chord_error(const SurfacePiece& piece, const PieceGrid& grid) {
+    return chord_error(piece, grid.nu, true) + chord_error(piece, grid.nv, false);
+}
+
 bool locate(const SurfacePieces& pieces, const Vec3& position, PiecePoint& out) {
     double best = std::numeric_limits<double>::infinity();
     for (uint32_t index = 0; index < pieces.size(); ++index) {

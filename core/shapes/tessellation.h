@@ -80,6 +80,11 @@ struct TessellationOptions {
 void tessellate(const SurfacePieces& pieces, const TessellationOptions& options,
                 TessellatedMesh& out);
 
+// The chord error of a piece's grid: the largest distance of a cell side's midpoint chord from
+// the surface along s, plus that along t (what `max_chord` bounds, half each way). Unlike
+// TessellatedMesh::bulge it includes the in-plane error of a curved rim (a disk's polygon).
+double grid_chord_error(const SurfacePiece& piece, const PieceGrid& grid);
+
 // Where a point on (or near) the surface lies: the piece it is nearest to and its (s, t) there,
 // clamped into [0, 1]². False when there are no pieces.
 struct PiecePoint {

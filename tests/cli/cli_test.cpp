@@ -97,6 +97,37 @@ TEST_F(CliTest, InfoAndStatsCountInstances) {
         << stats.output;
 }
 
+// --shape-method over the objects' own "method"; --stats prints each type's and object's method
+// (docs/shape-methods.md); info counts height fields.
+TEST_F(CliTest, ShapeMethodsInStatsAndInfo) {
+    write("shapes.json", R"({"rayo": 1, "camera": {"width": 32, "height": 24, "eye": [0, 1, 6]},
+        "textures": {"hills": {"type": "perlin"}},
+        "objects": [{"type": "cylinder", "base": [-1, -1, 0], "top": [-1, 1, 0], "radius": 0.5},
+                    {"type": "cone", "base": [1, -1, 0], "base_radius": 0.5, "apex": [1, 1, 0],
+                     "apex_radius": 0,
+                     "method": "mesh"},
+                    {"type": "heightfield", "texture": "hills", "size": [4, 0.2, 4],
+                     "origin": [-2, -2, -2], "method": "dda"}]})");
+    const CommandResult info = run("info shapes.json");
+    EXPECT_EQ(info.exit_code, 0) << info.output;
+    EXPECT_NE(info.output.find("heightfields 1\n"), std::string::npos) << info.output;
+    CommandResult r = run("render shapes.json --stats -o s.exr");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("shape method                cone: 1 mesh ("), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("shape method                cone 0 (mesh): mesh, as requested"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("shape method                cylinder"), std::string::npos) << r.output;
+    r = run("render shapes.json --stats --shape-method auto -o s.exr");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("shape method                cylinder: 1 mesh ("), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("cone 0 (auto): analytic, analytic: its own intersection"),
+              std::string::npos)
+        << r.output;
+}
+
 TEST_F(CliTest, HelpAndVersion) {
     CommandResult r = run("--help");
     EXPECT_EQ(r.exit_code, 0);
@@ -131,6 +162,8 @@ TEST_F(CliTest, BadFlagsAreRefusedWithoutOutput) {
         {"render --max-error-px 0 -o x.png", "--max-error-px: expected a number in [1e-06"},
         {"render --max-error-px nan -o x.png", "--max-error-px: expected a number in"},
         {"render --max-error-px 2x -o x.png", "--max-error-px: expected a number in"},
+        {"render --shape-method fast -o x.png",
+         "--shape-method: expected 'analytic', 'mesh' or 'auto', got 'fast'"},
         {"render --range log -o x.png", "--range: expected 'clamp' or 'normalize'"},
         {"render -o", "-o: missing value"},
         {"render a.nff b.nff -o x.png", "unexpected argument 'b.nff'"},

@@ -15,6 +15,7 @@
 
 #include "apps/scene/renderer.h"
 #include "apps/scene/sphere_method_choice.h"
+#include "bench/lab/shape_methods_study.h"
 #include "core/shapes/icosphere.h"
 
 namespace rayo {
@@ -126,7 +127,37 @@ TEST(AccuracyBenchCommand, WritesCsvAndChartsForEveryScene) {
             EXPECT_GT(std::filesystem::file_size(chart), 1000u) << chart;
         }
     }
-    for (const char* file : {"stability.png", "stability.svg", "stability.csv"}) {
+    // The shape-method study (docs/shape-methods.md): every shape analytic and at every budget,
+    // one auto choice per shape, meshes within their budget from 2 px down.
+    std::ifstream shapes_csv(dir / "shape_methods.csv");
+    std::getline(shapes_csv, line);
+    EXPECT_EQ(line.rfind("shape,form,budget_px,auto,triangles", 0), 0u) << line;
+    int shape_rows = 0, shape_autos = 0;
+    while (std::getline(shapes_csv, line)) {
+        ++shape_rows;
+        std::vector<std::string> f;
+        std::stringstream fields(line);
+        for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+        ASSERT_EQ(f.size(), 12u) << line;
+        shape_autos += f[3] == "1";
+        const double budget = std::stod(f[2]), error = std::stod(f[10]);
+        if (f[1] == "analytic") {
+            EXPECT_EQ(error, 0.0) << line;
+        } else if (budget <= 2.0) {
+            EXPECT_LE(error, budget) << line;
+            // The chord error reported; the paraboloid's side chords at its vertex fall only as
+            // n^-1/2 on its height-uniform grid and stop short at kMeshFormMaxCells.
+            if (f[0] != "paraboloid") {
+                EXPECT_LE(std::stod(f[9]), budget) << line;
+            }
+        }
+    }
+    const int shapes = static_cast<int>(shape_method_scenes(16).size());
+    EXPECT_EQ(shape_rows, shapes * (1 + static_cast<int>(shape_method_budgets().size())));
+    EXPECT_EQ(shape_autos, shapes);
+    for (const char* file :
+         {"stability.png", "stability.svg", "stability.csv", "shape_methods_time.png",
+          "shape_methods_time.svg", "shape_methods_memory.png", "shape_methods_memory.svg"}) {
         EXPECT_GT(std::filesystem::file_size(dir / file), 1000u) << file;
     }
     std::filesystem::remove_all(dir);
