@@ -1492,7 +1492,7 @@ void SceneParser::parse_voxels(const Json& value, const std::string& pointer,
                                SceneDescription& out) const {
     check_keys(value, pointer,
                {"type", "file", "dims", "format", "size", "origin", "mode", "threshold", "transfer",
-                "material"});
+                "material", "method"});
     VoxelGrid grid;
     const std::string dims_pointer = child(pointer, "dims");
     const std::string side_range = "[2, " + std::to_string(kMaxVoxelSide) + "]";
@@ -1536,8 +1536,9 @@ void SceneParser::parse_voxels(const Json& value, const std::string& pointer,
     }
     grid.mode = mode == "surface" ? VoxelMode::Surface : VoxelMode::Composite;
     // Each mode's own fields; the other mode's are refused (they would do nothing).
-    for (const char* key : mode == "surface" ? std::vector<const char*>{"transfer"}
-                                             : std::vector<const char*>{"threshold", "material"}) {
+    for (const char* key : mode == "surface"
+                               ? std::vector<const char*>{"transfer"}
+                               : std::vector<const char*>{"threshold", "material", "method"}) {
         if (find(value, key)) {
             fail(child(pointer, key), std::string(key) + " applies to \"mode\": \"" +
                                           (mode == "surface" ? "composite" : "surface") +
@@ -1545,6 +1546,11 @@ void SceneParser::parse_voxels(const Json& value, const std::string& pointer,
         }
     }
     grid.threshold = real_or(value, pointer, "threshold", 0.5f);
+    // Surface mode: traced by the 3-D DDA (default) or as its marching-tetrahedra mesh.
+    bool mesh = false;
+    if (const Json* v = find(value, "method")) {
+        mesh = choice(*v, child(pointer, "method"), {"dda", "mesh"}) == "mesh";
+    }
     grid.material = material_of(value, pointer);
     if (const Json* v = find(value, "transfer")) {
         grid.transfer = parse_transfer(*v, child(pointer, "transfer"));
@@ -1576,7 +1582,17 @@ void SceneParser::parse_voxels(const Json& value, const std::string& pointer,
                      std::to_string(grid.values[i]) + ": expected values " + kSceneMagnitudeRule);
         }
     }
-    out.scene.voxels.push_back(std::move(grid));
+    if (!mesh) {
+        out.scene.voxels.push_back(std::move(grid));
+        return;
+    }
+    TriangleMesh triangles = grid.tessellate();
+    if (triangles.triangles.empty()) {
+        out.warnings.push_back(m_source + "#" + pointer +
+                               ": the voxel grid's mesh is empty (no voxel crosses the threshold)");
+        return;
+    }
+    out.scene.meshes.push_back(std::move(triangles));
 }
 
 // A transfer ramp: [{"value": v, "color": c, "density": σ}, ...], sorted by value.

@@ -4,6 +4,8 @@
 #include <cstring>
 #include <limits>
 
+#include "core/shapes/marching_tetrahedra.h"
+
 namespace rayo {
 namespace {
 
@@ -233,6 +235,22 @@ void VoxelGrid::parameterization(const Vec3& position, SurfaceHit& out) const {
     const Vec3 local = (position - lower) / size;
     out.uv = glm::vec2(local.x, local.y);
     out.dpdu = Vec3(size.x, 0.0f, 0.0f);
+}
+
+TriangleMesh VoxelGrid::tessellate() const {
+    SampledField field;
+    const Vec3 voxel = voxel_size();
+    field.lower = DVec3(lower + 0.5f * voxel);  // values sit at voxel centres
+    field.cell = DVec3(voxel);
+    for (int a = 0; a < 3; ++a) field.counts[a] = dims[a];
+    field.samples.reserve(values.size());
+    for (const float v : values) field.samples.push_back(double(v) - double(threshold));
+    field.outward = [this](const DVec3& p) {
+        const Vec3 outward = -gradient(Vec3(p));
+        const float length = glm::length(outward);
+        return length > 0.0f ? outward / length : Vec3(0.0f, 1.0f, 0.0f);
+    };
+    return marching_tetrahedra(field, material, "voxels");
 }
 
 }  // namespace rayo

@@ -22,6 +22,7 @@
 
 #include "core/grid_walk.h"
 #include "core/shapes/box.h"
+#include "core/shapes/mesh.h"
 #include "core/shapes/outline.h"
 #include "core/shapes/shape.h"
 
@@ -77,6 +78,10 @@ struct VoxelGrid {
     float sample(const Vec3& p) const;
     // Its central-difference gradient (steps of half a voxel).
     Vec3 gradient(const Vec3& p) const;
+    // Surface mode's tessellated form (`"method": "mesh"`): marching tetrahedra over the voxel
+    // centres (core/shapes/marching_tetrahedra.h), vertices where the linear interpolation
+    // along a lattice edge crosses the threshold, normals −∇ as the traversal's.
+    TriangleMesh tessellate() const;
 
     Bounds3 bounds() const { return {lower, lower + size}; }
     // The first crossing of the iso-surface in (tnear, tfar); hit.normal = −gradient.

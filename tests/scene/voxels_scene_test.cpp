@@ -122,6 +122,42 @@ TEST(VoxelsScene, SurfaceNormalsAreRadialAndHitsLieOnTheSphere) {
     EXPECT_GT(hits, 60);
 }
 
+TEST(VoxelsScene, MeshFormLiesOnTheSphereAndMatchesTheTraversal) {
+    // "method": "mesh": the marching-tetrahedra mesh over the voxel centres. Its vertices
+    // interpolate linearly along lattice edges where the traversal roots the trilinear
+    // interpolant, so the two agree to a fraction of a voxel, and both lie on the sphere.
+    const int n = 48;
+    const float r = 0.7f, voxel = 2.0f / float(n);
+    write_bytes("sphere.raw", sphere_bytes(n, r));
+    std::string text = sphere_scene(64);
+    const std::string glow = R"("material": "glow")";
+    text.replace(text.find(glow), glow.size(), glow + R"(, "method": "mesh")");
+    const SceneDescription meshed = load(text);
+    ASSERT_TRUE(meshed.scene.voxels.empty());
+    ASSERT_EQ(meshed.scene.meshes.size(), 1u);
+    EXPECT_GT(meshed.scene.meshes[0].triangle_count(), 1000u);
+    const SceneDescription traced = load(sphere_scene(64));
+    const Accel mesh_accel(meshed.scene), dda_accel(traced.scene);
+    int hits = 0;
+    for (int a = 0; a < 16; ++a) {
+        for (int b = 0; b < 16; ++b) {
+            Ray ray;
+            ray.origin = Vec3(0.1f * a - 0.75f, 0.1f * b - 0.75f, 5.0f);
+            ray.direction = glm::normalize(Vec3(0.02f * a, -0.01f * b, -1.0f));
+            SurfaceHit on_mesh, on_grid;
+            const bool mesh_hit = mesh_accel.intersect(ray, on_mesh);
+            if (!dda_accel.intersect(ray, on_grid)) continue;
+            ASSERT_TRUE(mesh_hit) << a << " " << b;
+            ++hits;
+            EXPECT_NEAR(glm::length(on_mesh.position), r, 0.25f * voxel);
+            EXPECT_NEAR(on_mesh.t, on_grid.t, 0.25f * voxel) << a << " " << b;
+            EXPECT_GT(glm::dot(on_mesh.shading_normal, glm::normalize(on_mesh.position)),
+                      std::cos(5.0f * kPi / 180.0f));
+        }
+    }
+    EXPECT_GT(hits, 60);
+}
+
 // A composite box [−1, 1] × [−1, 1] × [−L/2, L/2] of constant value 1 (u8 255) and one transfer
 // stop (colour c, density σ), seen along the z axis by the centre pixel of a 3 × 3 image.
 std::string slab_scene(const std::string& behind, const std::string& render = "{}") {
@@ -234,6 +270,12 @@ TEST(VoxelsScene, InfoCountsAndBadValuesAreRefusedAtTheirPointer) {
     EXPECT_EQ(error(R"("file": "v222.raw", "dims": [2, 2, 2],
                        "transfer": [{"value": 0, "color": 1, "density": 1}])"),
               "s.json#/objects/0/transfer: transfer applies to \"mode\": \"composite\" only");
+    EXPECT_EQ(error(R"("file": "v222.raw", "dims": [2, 2, 2], "method": "bvh")"),
+              "s.json#/objects/0/method: expected one of \"dda\", \"mesh\", got the string "
+              "\"bvh\"");
+    EXPECT_EQ(error(R"("file": "v222.raw", "dims": [2, 2, 2], "mode": "composite",
+                       "method": "mesh")"),
+              "s.json#/objects/0/method: method applies to \"mode\": \"surface\" only");
     EXPECT_NE(error(R"("file": "f32.raw", "dims": [2, 2, 2], "format": "f32")")
                   .find("s.json#/objects/0/file: voxel (1, 1, 0) of "),
               std::string::npos);
