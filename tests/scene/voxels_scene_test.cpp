@@ -95,6 +95,14 @@ TEST(VoxelsScene, SurfaceSphereCoversTheExactSpheresPixels) {
     EXPECT_LT(wrong, exact / 25);
 }
 
+// Ray (a, b) of a 16 × 16 fan toward the voxelized sphere from z = 5.
+Ray probe_ray(int a, int b) {
+    Ray ray;
+    ray.origin = Vec3(0.1f * a - 0.75f, 0.1f * b - 0.75f, 5.0f);
+    ray.direction = glm::normalize(Vec3(0.02f * a, -0.01f * b, -1.0f));
+    return ray;
+}
+
 TEST(VoxelsScene, SurfaceNormalsAreRadialAndHitsLieOnTheSphere) {
     const int n = 48;
     const float r = 0.7f, voxel = 2.0f / float(n);
@@ -104,9 +112,7 @@ TEST(VoxelsScene, SurfaceNormalsAreRadialAndHitsLieOnTheSphere) {
     int hits = 0;
     for (int a = 0; a < 16; ++a) {
         for (int b = 0; b < 16; ++b) {
-            Ray ray;
-            ray.origin = Vec3(0.1f * a - 0.75f, 0.1f * b - 0.75f, 5.0f);
-            ray.direction = glm::normalize(Vec3(0.02f * a, -0.01f * b, -1.0f));
+            const Ray ray = probe_ray(a, b);
             SurfaceHit hit;
             if (!accel.intersect(ray, hit)) continue;
             ++hits;
@@ -141,9 +147,7 @@ TEST(VoxelsScene, MeshFormLiesOnTheSphereAndMatchesTheTraversal) {
     int hits = 0;
     for (int a = 0; a < 16; ++a) {
         for (int b = 0; b < 16; ++b) {
-            Ray ray;
-            ray.origin = Vec3(0.1f * a - 0.75f, 0.1f * b - 0.75f, 5.0f);
-            ray.direction = glm::normalize(Vec3(0.02f * a, -0.01f * b, -1.0f));
+            const Ray ray = probe_ray(a, b);
             SurfaceHit on_mesh, on_grid;
             const bool mesh_hit = mesh_accel.intersect(ray, on_mesh);
             if (!dda_accel.intersect(ray, on_grid)) continue;
