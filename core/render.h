@@ -150,6 +150,9 @@ RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
     // second worker would start in the middle of the image.)
     std::atomic<int> next_item{0};
     std::atomic<int> delivered{0};
+    // Set by a worker whose tile failed (an exception from the integrator or the sink, e.g. a
+    // full disk): the others stop taking tiles, and tbb rethrows the first exception here.
+    std::atomic<bool> failed{false};
     const int workers = std::max(1, std::min(count, tbb::this_task_arena::max_concurrency()));
     // The caller's writes (sink, counters) before every task; every task before the merge.
     int handoff = 0;
@@ -160,20 +163,26 @@ RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
             tsan_acquire(&handoff);
             RayCounters& local = counters.local();
             std::vector<float>& rgba = buffers.local();
-            for (int item = next_item.fetch_add(1); item < count && !stop_requested();
-                 item = next_item.fetch_add(1)) {
-                const Tile tile = grid.tile(tiles.empty() ? item : tiles[item]);
-                rgba.assign(tile.pixel_count() * 4, 0.0f);
-                if (settings.aa == AntiAliasing::Adaptive) {
-                    AdaptiveTile<Camera, Integrator>(camera, integrator, settings.adaptive, local)
-                        .render(tile, rgba.data());
-                } else {
-                    render_tile(camera, integrator, settings.coherent, spp, inverse_spp, tile,
-                                rgba.data(), local);
+            auto more = [&](int item) { return item < count && !failed && !stop_requested(); };
+            try {
+                for (int item = next_item.fetch_add(1); more(item); item = next_item.fetch_add(1)) {
+                    const Tile tile = grid.tile(tiles.empty() ? item : tiles[item]);
+                    rgba.assign(tile.pixel_count() * 4, 0.0f);
+                    if (settings.aa == AntiAliasing::Adaptive) {
+                        AdaptiveTile<Camera, Integrator>(camera, integrator, settings.adaptive,
+                                                         local)
+                            .render(tile, rgba.data());
+                    } else {
+                        render_tile(camera, integrator, settings.coherent, spp, inverse_spp, tile,
+                                    rgba.data(), local);
+                    }
+                    sink.write_tile(tile, rgba.data());
+                    if (progress) progress->add(tile.pixel_count());
+                    delivered.fetch_add(1, std::memory_order_relaxed);
                 }
-                sink.write_tile(tile, rgba.data());
-                if (progress) progress->add(tile.pixel_count());
-                delivered.fetch_add(1, std::memory_order_relaxed);
+            } catch (...) {
+                failed = true;
+                throw;
             }
             tsan_release(&handoff);
         },

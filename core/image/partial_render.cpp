@@ -1,6 +1,7 @@
 #include "core/image/partial_render.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -35,6 +36,28 @@ struct RecordHeader {
     uint64_t own_checksum() const { return checksum64(this, 24); }
 };
 static_assert(sizeof(RecordHeader) == 32, "records are 32 bytes of header and the pixels");
+
+// Takes the advisory lock that says "a rayo render is writing this partial render now"
+// (flock(2): held by the open file, so it ends with the process, kill -9 included). False when
+// another process holds it.
+bool lock_exclusively(int fd) {
+    return ::flock(fd, LOCK_EX | LOCK_NB) == 0;
+}
+
+// Whether another process holds the lock of the partial render at `path` (a render of the
+// same output running now).
+bool locked_by_another_render(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    const bool locked = ::flock(fd, LOCK_SH | LOCK_NB) != 0;  // shared: two probes never clash
+    ::close(fd);
+    return locked;
+}
+
+std::string running_now_message(const std::string& path) {
+    return "another rayo render of this output is running now (its partial render '" + path +
+           "' is locked); wait for it to end, or write to another output";
+}
 
 // "name: value" lines (a value's line breaks become spaces).
 std::string fingerprint_text(const RenderFingerprint& fingerprint) {
@@ -143,6 +166,8 @@ std::unique_ptr<PartialRender> PartialRender::create(const std::string& output,
     std::unique_ptr<PartialRender> partial(new PartialRender(output, grid, fingerprint));
     struct stat info {};
     if (::stat(partial->m_path.c_str(), &info) == 0) {
+        if (locked_by_another_render(partial->m_path))
+            throw InputError(output, running_now_message(partial->m_path));
         throw InputError(output, "a partial render of this output exists ('" + partial->m_path +
                                      "'): continue it with --resume, or remove it to start over");
     }
@@ -161,6 +186,11 @@ std::unique_ptr<PartialRender> PartialRender::resume(const std::string& output,
         throw InputError(output, "--resume: cannot open the partial render '" + p.m_path +
                                      "': " + std::strerror(error) +
                                      (error == ENOENT ? " (nothing to resume)" : ""));
+    }
+    if (!lock_exclusively(p.m_fd)) {
+        ::close(p.m_fd);
+        p.m_fd = -1;
+        throw InputError(output, "--resume: " + running_now_message(p.m_path));
     }
     // The header: its first line, then the fingerprint up to the padding.
     std::string first(kHeaderAlign, '\0');
@@ -219,8 +249,10 @@ PartialRender::~PartialRender() {
     }
     m_wake.notify_all();
     if (m_thread.joinable()) m_thread.join();
-    if (m_fd >= 0) ::close(m_fd);
+    // Unlinked before it is closed, so that no other render can take the lock of a file that
+    // is about to go.
     if (m_done_count == 0 && (m_fd >= 0 || m_existing)) ::unlink(m_path.c_str());
+    if (m_fd >= 0) ::close(m_fd);
 }
 
 size_t PartialRender::slot_bytes() const {
@@ -320,9 +352,9 @@ void PartialRender::flush() {
 
 void PartialRender::remove() {
     flush();
+    ::unlink(m_path.c_str());  // before the close, as in the destructor
     if (m_fd >= 0) ::close(m_fd);
     m_fd = -1;
-    ::unlink(m_path.c_str());
     std::lock_guard<std::mutex> lock(m_mutex);
     m_done_count = 0;
     m_existing = false;
@@ -332,7 +364,9 @@ void PartialRender::remove() {
 void PartialRender::open_for_writing() {
     if (m_fd >= 0) return;
     m_fd = ::open(m_path.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (m_fd < 0 && errno == EEXIST) throw InputError(m_output, running_now_message(m_path));
     if (m_fd < 0) fail("cannot create", errno);
+    lock_exclusively(m_fd);  // a new file: nobody else can hold its lock
     if (!write_at(m_fd, m_header.data(), m_header.size(), 0)) fail("cannot write", errno);
 }
 

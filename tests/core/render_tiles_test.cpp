@@ -1,11 +1,17 @@
 // The tile loop against stand-in cameras, integrators and sinks (no Embree): the grid covers the
 // image once, every tile reaches the sink exactly once with its pixels, a tile list renders only
 // those tiles, a camera may have no ray for a sample (alpha counts the samples that had one),
-// and the lens sample reaches the camera.
+// and the lens sample reaches the camera; a failing tile stops the other workers.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
+#include <chrono>
+#include <condition_variable>
 #include <mutex>
 #include <set>
+#include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "core/film.h"
@@ -126,6 +132,56 @@ TEST(RenderTiles, OneSamplePerPixelLooksThroughThePixelAndLensCentres) {
     TileSettings settings;
     render_tiles(HalfCamera{}, EchoIntegrator{}, settings, film);
     EXPECT_EQ(film.rgb(60, 33), Vec3(60.0f, 33.0f, 0.5f));
+}
+
+// A tile that fails (here the sink, as a full disk would) ends the render: its exception reaches
+// the caller, the other workers stop taking tiles (before, they rendered the rest of the image
+// for nothing), and finish() is not called. The sink makes the schedule deterministic: the first
+// tile's write waits until a second worker is writing too, and that worker waits until the
+// first has thrown; what the second worker writes after that is counted, each write taking
+// 5 ms as a real tile would.
+TEST(RenderTiles, AFailingTileStopsTheOtherWorkers) {
+    struct FailingSink : TileSink {
+        std::mutex mutex;
+        std::condition_variable changed;
+        int writes = 0, writes_after_failure = 0, finished = 0;
+        bool second_worker_writing = false, thrown = false;
+        void write_tile(const Tile&, const float*) override {
+            std::unique_lock<std::mutex> lock(mutex);
+            if (thrown) {
+                // A tile takes milliseconds in a real render; the thrower's unwinding to the
+                // loop's catch (slow the first time in a process) must not look like a miss.
+                ++writes_after_failure;
+                lock.unlock();
+                std::this_thread::sleep_for(std::chrono::milliseconds(5));
+                return;
+            }
+            if (++writes == 1) {
+                const bool met = changed.wait_for(lock, std::chrono::seconds(20),
+                                                  [&] { return second_worker_writing; });
+                EXPECT_TRUE(met) << "no second worker came to write a tile";
+                thrown = true;
+                changed.notify_all();
+                throw std::runtime_error("disk full");
+            }
+            second_worker_writing = true;
+            changed.notify_all();
+            changed.wait(lock, [&] { return thrown; });
+        }
+        void finish() override { ++finished; }
+    } sink;
+    TileSettings settings;
+    settings.tile_size = 16;
+    const HalfCamera camera{256, 256, 0.0f};  // 256 tiles
+    // Two threads even on a one-core machine.
+    tbb::global_control two_threads(tbb::global_control::max_allowed_parallelism, 2);
+    tbb::task_arena two_workers(2);
+    two_workers.execute([&] {
+        EXPECT_THROW(render_tiles(camera, EchoIntegrator{}, settings, sink), std::runtime_error);
+    });
+    // The second worker may take a few tiles before the failure is flagged, not the other 254.
+    EXPECT_LE(sink.writes_after_failure, 20);
+    EXPECT_EQ(sink.finished, 0);
 }
 
 }  // namespace

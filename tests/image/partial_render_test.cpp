@@ -113,6 +113,37 @@ TEST_F(PartialRenderTest, RecordedTilesComeBackBitForBit) {
     EXPECT_FALSE(fs::exists(partial_render_path(m_output)));
 }
 
+// While a render writes its partial render (the lock on the file, held until the process ends),
+// a second render of the same output is refused, as a start and as a resume, with a message
+// that says so; once the first has ended the partial render resumes.
+TEST_F(PartialRenderTest, ASecondRenderOfTheSameOutputIsRefusedWhileTheFirstRuns) {
+    const TileGrid grid(64, 64, 16);
+    {
+        auto running = PartialRender::create(m_output, grid, m_fingerprint);
+        Film sink(64, 64);
+        auto recorder = running->recording_sink(sink);
+        recorder->begin(grid);
+        recorder->write_tile(grid.tile(2), tile_pixels(grid, 2).data());
+        running->flush();
+        ASSERT_TRUE(running->failure().empty()) << running->failure();
+        for (const bool resume : {false, true}) {
+            try {
+                if (resume)
+                    PartialRender::resume(m_output, grid, m_fingerprint);
+                else
+                    PartialRender::create(m_output, grid, m_fingerprint);
+                ADD_FAILURE() << (resume ? "resume" : "create") << " was not refused";
+            } catch (const InputError& error) {
+                EXPECT_NE(std::string(error.what()).find("is running now"), std::string::npos)
+                    << error.what();
+            }
+        }
+        EXPECT_EQ(running->tiles_done(), 1) << "the refused runs touched the file";
+    }
+    auto partial = PartialRender::resume(m_output, grid, m_fingerprint);
+    EXPECT_EQ(partial->tiles_done(), 1);
+}
+
 // A slot whose bytes do not match its checksum (torn, or another tile's) does not count.
 TEST_F(PartialRenderTest, SlotsThatDoNotCheckOutAreMissing) {
     const TileGrid grid(64, 64, 16);
