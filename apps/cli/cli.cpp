@@ -565,6 +565,9 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
     for (const std::string& line : shape_method_lines(r.shapes)) {
         out << "  shape method                " << line << "\n";
     }
+    for (const std::string& line : d.method_choices) {
+        out << "  shape method                " << line << "\n";
+    }
     if (r.instances > 0) {
         out << "  instances                   " << r.instances << " of " << d.scene.groups.size()
             << " group(s): " << r.stored_primitives << " primitives stored, "

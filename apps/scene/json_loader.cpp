@@ -45,6 +45,18 @@ constexpr int kMaxVoxelSide = 1 << 16;
 // Most points an area light may be sampled at per shading point (each is a shadow ray).
 constexpr int kMaxAreaLightSamples = 4096;
 
+// A --stats line for an `auto` the reader decided by the size of an object's mesh
+// (SceneDescription::method_choices): "voxels /objects/3 (auto): mesh, 42216 triangles (<=
+// 671088, ~4 MB)".
+std::string auto_choice_line(const std::string& type, const std::string& pointer,
+                             const std::string& chosen, size_t triangles, size_t limit,
+                             size_t bytes_per_triangle) {
+    return type + " " + (pointer.empty() ? "/" : pointer) + " (auto): " + chosen + ", " +
+           std::to_string(triangles) + " triangles " + (triangles <= limit ? "(<= " : "(> ") +
+           std::to_string(limit) + ", ~" + std::to_string((triangles * bytes_per_triangle) >> 20) +
+           " MB as a mesh)";
+}
+
 // ---- JSON syntax errors -> "file:line:column" ---------------------------------------------
 
 // nlohmann's DOM builder, remembering where parsing failed: its exceptions carry a byte offset
@@ -1478,6 +1490,12 @@ void SceneParser::parse_heightfield(const Json& value, const std::string& pointe
     }
     const bool mesh =
         method == "mesh" || (method == "auto" && auto_prefers_mesh(field.cell_count()));
+    if (method == "auto") {
+        // Two triangles a cell (kMeshBytesPerCell is the cell's).
+        out.method_choices.push_back(
+            auto_choice_line("heightfield", pointer, mesh ? "mesh" : "dda", 2 * field.cell_count(),
+                             2 * (kAutoMeshBytes / kMeshBytesPerCell), kMeshBytesPerCell / 2));
+    }
     if (mesh) {
         out.scene.meshes.push_back(field.tessellate());
     } else {
@@ -1546,10 +1564,11 @@ void SceneParser::parse_voxels(const Json& value, const std::string& pointer,
         }
     }
     grid.threshold = real_or(value, pointer, "threshold", 0.5f);
-    // Surface mode: traced by the 3-D DDA (default) or as its marching-tetrahedra mesh.
-    bool mesh = false;
+    // Surface mode: traced by the 3-D DDA (default) or as its marching-tetrahedra mesh, or
+    // either by the mesh's size (auto_voxels_prefer_mesh).
+    std::string method = "dda";
     if (const Json* v = find(value, "method")) {
-        mesh = choice(*v, child(pointer, "method"), {"dda", "mesh"}) == "mesh";
+        method = choice(*v, child(pointer, "method"), {"dda", "mesh", "auto"});
     }
     grid.material = material_of(value, pointer);
     if (const Json* v = find(value, "transfer")) {
@@ -1581,6 +1600,14 @@ void SceneParser::parse_voxels(const Json& value, const std::string& pointer,
                      std::to_string(i / (nx * ny)) + ") of '" + path + "' is " +
                      std::to_string(grid.values[i]) + ": expected values " + kSceneMagnitudeRule);
         }
+    }
+    bool mesh = method == "mesh";
+    if (method == "auto") {
+        const size_t triangles = grid.mesh_triangles();
+        mesh = auto_voxels_prefer_mesh(triangles);
+        out.method_choices.push_back(auto_choice_line(
+            "voxels", pointer, mesh ? "mesh" : "dda", triangles,
+            kAutoVoxelMeshBytes / kVoxelMeshBytesPerTriangle, kVoxelMeshBytesPerTriangle));
     }
     if (!mesh) {
         out.scene.voxels.push_back(std::move(grid));

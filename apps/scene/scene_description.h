@@ -49,6 +49,10 @@ struct SceneDescription {
     size_t skipped_triangles = 0;
     // The "method" of top-level objects that name one (objects without stay analytic).
     std::vector<ShapeMethodRequest> shape_methods;
+    // The methods the reader chose for objects it reads straight into their form (voxel grids
+    // and height fields: `auto`), one line each for --stats: "voxels /objects/3 (auto): mesh,
+    // 42216 triangles (<= 671088, ~4 MB)".
+    std::vector<std::string> method_choices;
 };
 
 }  // namespace rayo

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/shapes/blob_mesh.h"
 #include "core/shapes/mesh_form.h"
 
 namespace rayo {
@@ -14,6 +15,30 @@ namespace {
 // The distance from `eye` to the nearest point of `b`; 0 inside.
 float distance_to(const Bounds3& b, const Vec3& eye) {
     return glm::length(glm::clamp(eye, b.lower, b.upper) - eye);
+}
+
+// The cells a side of a shape's mesh form at most: a piece's grid (core/shapes/mesh_form.h), a
+// blob's lattice across (core/shapes/blob_mesh.h; auto's is smaller, see
+// kAutoBlobMeshMaxCells).
+template <typename S>
+int max_cells(ShapeMethod requested) {
+    if constexpr (std::is_same_v<S, Blob>) {
+        return requested == ShapeMethod::Auto ? kAutoBlobMeshMaxCells : kBlobMeshMaxCells;
+    } else {
+        return int(kMeshFormMaxCells);
+    }
+}
+
+// The shape's mesh form within `max_chord` (world units).
+template <typename S>
+MeshForm mesh_form_of(const S& shape, float max_chord, ShapeMethod requested) {
+    if constexpr (std::is_same_v<S, Blob>) {
+        return blob_mesh_form(shape, max_chord, max_cells<S>(requested));
+    } else {
+        SurfacePieces pieces;
+        shape.pieces(pieces);
+        return mesh_form(pieces, max_chord, shape.material);
+    }
 }
 
 // `mesh_bytes`: the scene's mesh forms so far (auto's memory budget).
@@ -46,9 +71,7 @@ void choose(const S& shape, uint32_t index, ShapeMethod requested, const SceneDe
     // cells allow, its reported error says what that reaches.
     const Bounds3 b = shape.bounds();
     const float at = distance > 0.0f ? distance : max_abs_component(b.upper - b.lower);
-    SurfacePieces pieces;
-    shape.pieces(pieces);
-    form = mesh_form(pieces, chord_budget(budget_px, pixel_angle, at), shape.material);
+    form = mesh_form_of(shape, chord_budget(budget_px, pixel_angle, at), requested);
     choice.triangles = form.mesh.triangle_count();
     choice.bytes = choice.triangles * kMeshBytesPerTriangle;
     choice.chord_px = distance > 0.0f ? form.chord / (distance * pixel_angle) : 0.0f;
@@ -61,16 +84,16 @@ void choose(const S& shape, uint32_t index, ShapeMethod requested, const SceneDe
     // trace faster than the analytic code and within the memory limit.
     if (choice.chord_px > budget_px) {
         reason << "analytic: a mesh reaches only " << choice.chord_px << " px (> budget "
-               << budget_px << " px) with " << kMeshFormMaxCells << " cells a side";
-    } else if (choice.triangles > kAutoMeshMaxTriangles) {
+               << budget_px << " px) with " << max_cells<S>(requested) << " cells a side";
+    } else if (choice.triangles > auto_mesh_max_triangles<S>()) {
         reason << "analytic: the mesh within " << budget_px << " px needs " << choice.triangles
-               << " triangles (> " << kAutoMeshMaxTriangles << ": slower than analytic)";
+               << " triangles (> " << auto_mesh_max_triangles<S>() << ": slower than analytic)";
     } else if (mesh_bytes + choice.bytes > kAutoMeshSceneBytes) {
         reason << "analytic: the scene's mesh forms would pass " << (kAutoMeshSceneBytes >> 20)
                << " MB";
     } else {
         choice.chosen = ShapeMethod::Mesh;
-        reason << "mesh: " << choice.triangles << " triangles (<= " << kAutoMeshMaxTriangles
+        reason << "mesh: " << choice.triangles << " triangles (<= " << auto_mesh_max_triangles<S>()
                << ") within " << budget_px << " px";
     }
     choice.reason = reason.str();

@@ -1,8 +1,8 @@
 #pragma once
 // Shape methods: each top-level object with a mesh form (core/shapes/mesh_form.h; every shape
-// with pieces but the sphere, which has `--sphere-method`) is traced analytically or as Embree
-// triangles within the pixel error budget, as its "method" (or `--shape-method`) says; `auto`
-// picks per object from the budget and the measured costs (docs/shape-methods.md).
+// with pieces, and blobs, but the sphere, which has `--sphere-method`) is traced analytically or as
+// Embree triangles within the pixel error budget, as its "method" (or `--shape-method`) says;
+// `auto` picks per object from the budget and the measured costs (docs/shape-methods.md).
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -51,10 +51,31 @@ constexpr size_t kMeshBytesPerTriangle = 100;
 constexpr size_t kAutoMeshMaxTriangles = 4096;
 constexpr size_t kAutoMeshSceneBytes = size_t(64) << 20;
 
-// Whether auto may take a shape's mesh form: the clipped quadrics (above).
+// Blobs (docs/csg-and-blobs.md, bench/blob_study.cpp, five elements, one thread): the
+// interval-bounded search traces 1.5–2.2 Mrays/s; marching-tetrahedra meshes of 2,364 to 152,736
+// triangles (16 to 128 cells across) trace 3.8 to 2.4 Mrays/s, 610,739 (256 cells) about as
+// fast as the search, 2.4 M (512 cells) at 0.9. So auto takes a blob's mesh form when a lattice
+// of at most kAutoBlobMeshMaxCells cells across reaches the budget, which keeps it under
+// kAutoBlobMeshMaxTriangles (and within kAutoMeshSceneBytes with the scene's other meshes).
+constexpr int kAutoBlobMeshMaxCells = 128;
+constexpr size_t kAutoBlobMeshMaxTriangles = 160000;
+
+// The most triangles auto takes for a shape's mesh form; 0: auto keeps it analytic.
+template <typename S>
+constexpr size_t auto_mesh_max_triangles() {
+    if constexpr (std::is_same_v<S, Blob>) {
+        return kAutoBlobMeshMaxTriangles;
+    } else if constexpr (std::is_same_v<typename ShapeTraits<S>::Intersector, ClippedQuadric>) {
+        return kAutoMeshMaxTriangles;
+    } else {
+        return 0;
+    }
+}
+
+// Whether auto may take a shape's mesh form: the clipped quadrics and blobs (above).
 template <typename S>
 constexpr bool auto_may_mesh() {
-    return std::is_same_v<typename ShapeTraits<S>::Intersector, ClippedQuadric>;
+    return auto_mesh_max_triangles<S>() > 0;
 }
 
 // The world-space chord error `max_error_px` allows at `distance` from the eye.

@@ -5,11 +5,6 @@
 namespace rayo {
 namespace {
 
-// The cube's corners (bit 0: +x, bit 1: +y, bit 2: +z) and its six tetrahedra around the
-// diagonal 0–7: each runs 0 → 7 through two corners that differ in one more axis.
-constexpr int kTetrahedra[6][4] = {{0, 7, 1, 3}, {0, 7, 3, 2}, {0, 7, 2, 6},
-                                   {0, 7, 6, 4}, {0, 7, 4, 5}, {0, 7, 5, 1}};
-
 class Tessellator {
   public:
     Tessellator(const SampledField& field, uint32_t material, const std::string& name)
@@ -46,7 +41,7 @@ class Tessellator {
             inside += g[c] > 0.0;
         }
         if (inside == 0 || inside == 8) return;
-        for (const auto& tet : kTetrahedra) {
+        for (const auto& tet : kCubeTetrahedra) {
             int in[4], out[4], n_in = 0, n_out = 0;
             for (const int c : tet) (g[c] > 0.0 ? in[n_in++] : out[n_out++]) = c;
             const auto v = [&](int a, int b) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <type_traits>
 
+#include "core/shapes/blob.h"
 #include "core/shapes/mesh.h"
 #include "core/shapes/sphere.h"
 #include "core/shapes/tessellation.h"
@@ -27,12 +28,15 @@ struct MeshForm {
 // max_chord > 0. Pieces that collapse to lines (poles, a disk's centre) leave no triangles there.
 MeshForm mesh_form(const SurfacePieces& pieces, float max_chord, uint32_t material);
 
-// Whether a shape takes a method (core/shape_method.h): it has pieces, and it is not a sphere
+// Whether a shape takes a method (core/shape_method.h): it has pieces, or it is a blob (its
+// mesh form is its marching tetrahedra, core/shapes/blob_mesh.h), and it is not a sphere
 // (spheres have their own methods, core/sphere_method.h).
 template <typename S>
 bool has_mesh_form(const S& shape) {
     if constexpr (std::is_same_v<S, Sphere>) {
         return false;
+    } else if constexpr (std::is_same_v<S, Blob>) {
+        return true;
     } else {
         SurfacePieces pieces;
         shape.pieces(pieces);

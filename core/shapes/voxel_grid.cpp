@@ -237,6 +237,12 @@ void VoxelGrid::parameterization(const Vec3& position, SurfaceHit& out) const {
     out.dpdu = Vec3(size.x, 0.0f, 0.0f);
 }
 
+size_t VoxelGrid::mesh_triangles() const {
+    return marching_tetrahedra_triangles(dims, [this](int i, int j, int k) {
+        return double(value(i, j, k)) - double(threshold);  // as tessellate()'s samples
+    });
+}
+
 TriangleMesh VoxelGrid::tessellate() const {
     SampledField field;
     const Vec3 voxel = voxel_size();

@@ -16,6 +16,7 @@
 //     segment over what lies behind it, C + T·behind (composite_volumes below,
 //     shading/whitted.cpp).
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -42,6 +43,19 @@ std::vector<float> decode_voxels(const std::string& bytes, VoxelFormat format);
 constexpr float kMinTransmittance = 1e-5f;
 
 enum class VoxelMode { Surface, Composite };
+
+// Surface mode's `"method": "auto"` (docs/voxels.md): the mesh while its estimated memory stays
+// within kAutoVoxelMeshBytes (about 671,000 triangles), the traversal beyond. The estimate is
+// the memory Embree and rayo take per triangle of a mesh form, 82–120 bytes measured
+// (docs/shape-methods.md). The figures behind the budget: the example planet's 42,216-triangle
+// mesh traced about twice as fast as the DDA over its 64 × 32 × 64 voxels (docs/voxels.md), and
+// height fields' Embree triangles traced faster than their traversal up to 512² cells (524,288
+// triangles) and 2–4× slower from 1024² cells (2 M triangles) on (docs/heightfields.md).
+constexpr size_t kVoxelMeshBytesPerTriangle = 100;
+constexpr size_t kAutoVoxelMeshBytes = size_t(64) << 20;
+inline bool auto_voxels_prefer_mesh(size_t triangles) {
+    return triangles <= kAutoVoxelMeshBytes / kVoxelMeshBytesPerTriangle;
+}
 
 // One stop of a transfer ramp: at value `value`, colour `color` and extinction `density` (per
 // world unit).
@@ -82,6 +96,9 @@ struct VoxelGrid {
     // centres (core/shapes/marching_tetrahedra.h), vertices where the linear interpolation
     // along a lattice edge crosses the threshold, normals −∇ as the traversal's.
     TriangleMesh tessellate() const;
+    // The triangles tessellate() would make at most (marching_tetrahedra_triangles), without
+    // making them: what `auto` weighs.
+    size_t mesh_triangles() const;
 
     Bounds3 bounds() const { return {lower, lower + size}; }
     // The first crossing of the iso-surface in (tnear, tfar); hit.normal = −gradient.

@@ -10,6 +10,7 @@
 #include "apps/scene/json_loader.h"
 #include "apps/scene/renderer.h"
 #include "core/accel.h"
+#include "core/shapes/blob_mesh.h"
 #include "tests/scene/json_error.h"
 
 namespace rayo {
@@ -38,6 +39,16 @@ Cylinder a_cylinder() {
     c.top = Vec3(0.4f, 1.0f, 0.0f);
     c.radius = 0.6f;
     return c;
+}
+
+// Three elements blending into one body (their spheres alone: radii 0.54, 0.49, 0.43).
+Blob a_blob() {
+    Blob b;
+    b.threshold = 0.35f;
+    b.elements = {{Vec3(-0.6f, -0.2f, 0.2f), 1.0f, 1.0f},
+                  {Vec3(0.0f, 0.3f, 0.0f), 0.9f, 1.0f},
+                  {Vec3(0.6f, -0.1f, -0.2f), 0.8f, 1.0f}};
+    return b;
 }
 
 // Every camera ray that hits both forms: the analytic hit lies within the chord budget of the
@@ -105,7 +116,33 @@ TEST(ShapeMethods, MeshFormsStayWithinTheChordBudgetOfTheAnalyticHits) {
         disk.normal = glm::normalize(Vec3(0.2f, 0.6f, 0.8f));
         expect_mesh_within_budget(disk, budget);
         expect_mesh_within_budget(Box{}, budget);
+        expect_mesh_within_budget(a_blob(), budget);
     }
+}
+
+// A blob's mesh form is its marching tetrahedra, refined until blob_mesh_chord() is within the
+// budget; that estimate bounds the separation the fan of camera rays above measures.
+TEST(ShapeMethods, BlobMeshFormsRefineToTheirBudget) {
+    SceneDescription d = with(a_blob());
+    d.settings.shape_method = ShapeMethod::Mesh;
+    const Camera camera = Camera::create(d.scene.camera);
+    d.settings.max_error_px = 2.0f;
+    const ShapeMethodChoice coarse = choose_shape_methods(d, camera).objects.at(0);
+    d.settings.max_error_px = 0.1f;
+    const ShapeMethodChoice fine = choose_shape_methods(d, camera).objects.at(0);
+    EXPECT_EQ(fine.type, "blob");
+    EXPECT_GT(fine.triangles, 4 * coarse.triangles);
+    EXPECT_LE(coarse.chord_px, 2.0f);
+    EXPECT_LE(fine.chord_px, 0.1f);
+    EXPECT_GT(coarse.chord_px, 0.1f);
+    // The estimate against the field itself: a mesh's chord is its vertices' and facets'
+    // distance from F = T, which a coarser lattice makes larger.
+    const Blob blob = a_blob();
+    const double near_chord = blob_mesh_chord(blob, tessellate_blob(blob, 0.05));
+    const double far_chord = blob_mesh_chord(blob, tessellate_blob(blob, 0.2));
+    EXPECT_GT(near_chord, 0.0);
+    EXPECT_GT(far_chord, 4.0 * near_chord);
+    EXPECT_LT(far_chord, 0.2);
 }
 
 // A finer budget makes a finer mesh, with the chord error the budget asks for.
@@ -158,6 +195,17 @@ TEST(ShapeMethods, AutoFollowsItsRule) {
     EXPECT_EQ(pick(with(cone), 4.0f).chosen, ShapeMethod::Analytic);
     EXPECT_EQ(pick(with(Box{}), 4.0f).chosen, ShapeMethod::Analytic);
     EXPECT_EQ(pick(with(Disk{}), 4.0f).chosen, ShapeMethod::Analytic);
+    // A blob whose mesh within the budget fits a lattice of kAutoBlobMeshMaxCells: the mesh;
+    // one whose budget needs a finer lattice: analytic.
+    const ShapeMethodChoice blob = pick(with(a_blob()));
+    EXPECT_EQ(blob.chosen, ShapeMethod::Mesh) << blob.reason;
+    EXPECT_LE(blob.triangles, kAutoBlobMeshMaxTriangles);
+    EXPECT_LE(blob.chord_px, 0.5f);
+    const ShapeMethodChoice fine_blob = pick(with(a_blob()), 0.002f);
+    EXPECT_EQ(fine_blob.chosen, ShapeMethod::Analytic) << fine_blob.reason;
+    EXPECT_GT(fine_blob.chord_px, 0.002f);
+    EXPECT_NE(fine_blob.reason.find("with 128 cells a side"), std::string::npos)
+        << fine_blob.reason;
 }
 
 TEST(ShapeMethods, WithoutMethodsTheSceneIsTracedAsLoaded) {
@@ -201,6 +249,17 @@ TEST(ShapeMethods, SceneFilesNameAMethodPerObject) {
     EXPECT_EQ(d.shape_methods[1].method, ShapeMethod::Auto);
     EXPECT_EQ(d.shape_methods[2].type, Shapes::index_of<Box>());
     EXPECT_EQ(d.shape_methods[2].method, ShapeMethod::Analytic);
+    const SceneDescription b = load_json_string(R"({"rayo": 1, "objects": [
+        {"type": "blob", "threshold": 0.5, "method": "auto",
+         "elements": [{"center": [0, 0, 0], "radius": 1, "strength": 1}]},
+        {"type": "blob", "threshold": 0.5, "method": "mesh",
+         "elements": [{"center": [3, 0, 0], "radius": 1, "strength": 1}]}]})",
+                                                "b.json", ".");
+    ASSERT_EQ(b.shape_methods.size(), 2u);
+    EXPECT_EQ(b.shape_methods[0].type, Shapes::index_of<Blob>());
+    EXPECT_EQ(b.shape_methods[0].method, ShapeMethod::Auto);
+    EXPECT_EQ(b.shape_methods[1].index, 1u);
+    EXPECT_EQ(b.shape_methods[1].method, ShapeMethod::Mesh);
     const RenderResult r = render_scene(d, 1, false);
     // In registry order; the second cylinder has no method: not listed.
     ASSERT_EQ(r.shapes.size(), 3u);
@@ -246,6 +305,23 @@ TEST(ShapeMethods, BadMethodsAreRefusedAtTheirPointer) {
     EXPECT_NE(json_error_of(grouped).find("s.json#/groups/g/0/method: objects in groups"),
               std::string::npos)
         << json_error_of(grouped);
+    const std::string blob = R"({"type": "blob", "threshold": 0.5,
+        "elements": [{"center": [0, 0, 0], "radius": 1, "strength": 1}])";
+    EXPECT_NE(json_error_of(scene(blob + R"(, "method": "dda"})"))
+                  .find("s.json#/objects/0/method: expected one of \"analytic\", \"mesh\", "
+                        "\"auto\", got the string \"dda\""),
+              std::string::npos);
+    const std::string grouped_blob =
+        R"({"rayo": 1, "groups": {"g": [)" + blob +
+        R"(, "method": "mesh"}]}, "objects": [{"type": "instance", "of": "g"}]})";
+    EXPECT_NE(json_error_of(grouped_blob).find("s.json#/groups/g/0/method: objects in groups"),
+              std::string::npos);
+    // CSG children are traced by their intervals: no method, a blob's neither.
+    EXPECT_NE(json_error_of(scene(R"({"type": "csg", "op": "union", "children": [)" + blob +
+                                  R"(, "method": "analytic"},
+                  {"type": "box", "min": [1, 0, 0], "max": [2, 1, 1]}]})"))
+                  .find("s.json#/objects/0/children/0/method: unknown key"),
+              std::string::npos);
     EXPECT_NE(json_error_of(scene(R"({"type": "csg", "op": "union", "children": [
                   {"type": "box", "min": [0, 0, 0], "max": [1, 1, 1], "method": "mesh"},
                   {"type": "box", "min": [1, 0, 0], "max": [2, 1, 1]}]})"))

@@ -162,6 +162,36 @@ TEST(VoxelsScene, MeshFormLiesOnTheSphereAndMatchesTheTraversal) {
     EXPECT_GT(hits, 60);
 }
 
+// "method": "auto": the mesh while its triangles stay within the memory budget
+// (auto_voxels_prefer_mesh), the DDA beyond; the choice is reported for --stats.
+TEST(VoxelsScene, AutoTakesTheMeshWithinItsBudgetAndReportsIt) {
+    const size_t limit = kAutoVoxelMeshBytes / kVoxelMeshBytesPerTriangle;
+    EXPECT_TRUE(auto_voxels_prefer_mesh(42216));  // the example planet's mesh
+    EXPECT_TRUE(auto_voxels_prefer_mesh(limit));
+    EXPECT_FALSE(auto_voxels_prefer_mesh(limit + 1));
+    EXPECT_FALSE(auto_voxels_prefer_mesh(size_t(1) << 24));
+
+    write_bytes("sphere.raw", sphere_bytes(48, 0.7f));
+    std::string text = sphere_scene(64);
+    const std::string glow = R"("material": "glow")";
+    text.replace(text.find(glow), glow.size(), glow + R"(, "method": "auto")");
+    const SceneDescription chosen = load(text);
+    ASSERT_TRUE(chosen.scene.voxels.empty());
+    ASSERT_EQ(chosen.scene.meshes.size(), 1u);
+    // The count auto weighs is the mesh's (no corner of this grid lies on the threshold).
+    const SceneDescription traced = load(sphere_scene(64));
+    ASSERT_EQ(traced.scene.voxels.size(), 1u);
+    const size_t triangles = traced.scene.voxels[0].mesh_triangles();
+    EXPECT_EQ(triangles, chosen.scene.meshes[0].triangle_count());
+    EXPECT_EQ(traced.scene.voxels[0].tessellate().triangle_count(), triangles);
+    ASSERT_EQ(chosen.method_choices.size(), 1u);
+    EXPECT_EQ(chosen.method_choices[0],
+              "voxels /objects/0 (auto): mesh, " + std::to_string(triangles) +
+                  " triangles (<= " + std::to_string(limit) + ", ~" +
+                  std::to_string((triangles * 100) >> 20) + " MB as a mesh)");
+    EXPECT_TRUE(traced.method_choices.empty());  // dda by default, nothing chosen
+}
+
 // A composite box [−1, 1] × [−1, 1] × [−L/2, L/2] of constant value 1 (u8 255) and one transfer
 // stop (colour c, density σ), seen along the z axis by the centre pixel of a 3 × 3 image.
 std::string slab_scene(const std::string& behind, const std::string& render = "{}") {
@@ -275,7 +305,8 @@ TEST(VoxelsScene, InfoCountsAndBadValuesAreRefusedAtTheirPointer) {
                        "transfer": [{"value": 0, "color": 1, "density": 1}])"),
               "s.json#/objects/0/transfer: transfer applies to \"mode\": \"composite\" only");
     EXPECT_EQ(error(R"("file": "v222.raw", "dims": [2, 2, 2], "method": "bvh")"),
-              "s.json#/objects/0/method: expected one of \"dda\", \"mesh\", got the string "
+              "s.json#/objects/0/method: expected one of \"dda\", \"mesh\", \"auto\", got the "
+              "string "
               "\"bvh\"");
     EXPECT_EQ(error(R"("file": "v222.raw", "dims": [2, 2, 2], "mode": "composite",
                        "method": "mesh")"),
