@@ -26,12 +26,12 @@
 
 #include "apps/scene/input_file.h"
 #include "core/error.h"
+#include "core/math.h"
 #include "core/path_util.h"
 #include "core/scene.h"
 #include "core/scene_limits.h"
 
 namespace rayo {
-namespace {
 
 std::string file_name(const std::string& path) {
     const size_t slash = path.find_last_of('/');
@@ -47,6 +47,23 @@ std::string one_line(std::string text) {
     return text;
 }
 
+// "path:line" when a parser's message names a line, else the path.
+std::string place_with_line(const std::string& path, const std::string& message) {
+    static const std::regex line_pattern(R"(line:?\s*(\d+))");
+    std::smatch match;
+    if (std::regex_search(message, match, line_pattern)) return path + ":" + match[1].str();
+    return path;
+}
+
+void check_mesh_not_empty(const TriangleMesh& mesh, const std::string& path,
+                          const std::string& where) {
+    if (mesh.triangles.empty()) {
+        throw InputError(where, "mesh file '" + path + "' contains no (non-degenerate) triangles");
+    }
+}
+
+namespace {
+
 bool finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -54,13 +71,6 @@ bool finite(const Vec3& v) {
 void require_colour(const Vec3& c, const std::string& where, const std::string& what) {
     if (!finite(c) || c.x < 0.0f || c.y < 0.0f || c.z < 0.0f) {
         throw InputError(where, what + " must be finite and >= 0");
-    }
-}
-
-void check_mesh_not_empty(const TriangleMesh& mesh, const std::string& path,
-                          const std::string& where) {
-    if (mesh.triangles.empty()) {
-        throw InputError(where, "mesh file '" + path + "' contains no (non-degenerate) triangles");
     }
 }
 
@@ -90,14 +100,6 @@ Material material_from_mtl(const tinyobj::material_t& m, const std::string& wher
     if (!std::isfinite(m.ior)) throw InputError(where, what + "Ni must be finite");
     out.ior = m.ior > 0.0f ? static_cast<float>(m.ior) : 1.0f;  // Ni <= 0: unset
     return out;
-}
-
-// "path:line" when tinyobjloader's message names a line, else the path.
-std::string obj_place(const std::string& path, const std::string& message) {
-    static const std::regex line_pattern(R"(line:?\s*(\d+))");
-    std::smatch match;
-    if (std::regex_search(message, match, line_pattern)) return path + ":" + match[1].str();
-    return path;
 }
 
 // One corner of an `f` statement: "v", "v/vt", "v//vn" or "v/vt/vn". OBJ indices are 1-based,
@@ -306,7 +308,7 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
                                      /*default_vcols_fallback=*/false);
     if (!ok || !err.empty()) {
         const std::string message = one_line(err.empty() ? warn : err);
-        throw InputError(obj_place(path, message),
+        throw InputError(place_with_line(path, message),
                          "malformed OBJ: " + (message.empty() ? "cannot parse" : message));
     }
     // A missing material library is a warning (assets often travel without theirs): its faces
@@ -322,7 +324,7 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
     if (mtl_reader.missing.empty() && (warn.find("not found") != std::string::npos ||
                                        warn.find("Failed to load material") != std::string::npos)) {
         const std::string message = one_line(warn);
-        throw InputError(obj_place(path, message), "OBJ materials: " + message);
+        throw InputError(place_with_line(path, message), "OBJ materials: " + message);
     }
 
     std::vector<Material> converted;
@@ -921,6 +923,48 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
 }
 
 // ---- Shared helpers -----------------------------------------------------------------------
+
+const char* const kMeshFileKinds = ".obj, .gltf or .glb";
+
+bool is_mesh_file(const std::string& path) {
+    const std::string ext = lower_extension(path);
+    return ext == ".obj" || ext == ".gltf" || ext == ".glb";
+}
+
+ImportedMesh import_mesh_file(const std::string& path, std::vector<Material>& materials,
+                              const MeshImportOptions& options) {
+    const std::string& where = options.where;
+    const std::string ext = lower_extension(path);
+    ImportedMesh out;
+    if (ext == ".obj") {
+        out.mesh = load_obj(path, materials, where, &out.stats, options.access);
+    } else if (ext == ".gltf" || ext == ".glb") {
+        out.mesh = load_gltf(path, materials, where, &out.stats, options.access);
+    } else {
+        throw InputError(where, "unknown mesh file format '" + ext + "' of '" + path +
+                                    "': expected " + kMeshFileKinds);
+    }
+    TriangleMesh& mesh = out.mesh;
+    transform_mesh(mesh, options.transform);
+    if (!options.transform_where.empty()) {
+        for (const Vec3& p : mesh.positions) {
+            if (!within_scene_magnitude(max_abs_component(p))) {
+                throw InputError(options.transform_where,
+                                 std::string("the transformed mesh does not fit in floats: every "
+                                             "coordinate must be ") +
+                                     kSceneMagnitudeRule);
+            }
+        }
+    }
+    out.stats.degenerate_triangles += drop_degenerate_triangles(mesh);
+    check_mesh_not_empty(mesh, path, where);
+    if (out.stats.degenerate_triangles > 0) {  // dropped, not refused: reported by the CLI
+        out.stats.warnings.push_back(
+            where + ": dropped " + std::to_string(out.stats.degenerate_triangles) +
+            " degenerate (zero-area) triangle(s)" + (where == path ? "" : " of '" + path + "'"));
+    }
+    return out;
+}
 
 void transform_mesh(TriangleMesh& mesh, const glm::dmat4& transform) {
     for (auto& p : mesh.positions) {
