@@ -24,6 +24,8 @@
 #include <utility>
 #include <vector>
 
+#include "apps/scene/assimp_loader.h"
+#include "apps/scene/gltf_draco.h"
 #include "apps/scene/input_file.h"
 #include "core/error.h"
 #include "core/math.h"
@@ -834,22 +836,46 @@ std::string gltf_json_text(const std::string& bytes, bool binary) {
     return length <= bytes.size() - 20 ? bytes.substr(20, length) : std::string();
 }
 
+// The .glb `bytes` with its JSON chunk replaced by `json` (padded with spaces to 4 bytes, as
+// the container requires); the chunks after it are kept as they are.
+std::string replace_glb_json(const std::string& bytes, std::string json) {
+    uint32_t old_length = 0;
+    std::memcpy(&old_length, bytes.data() + 12, 4);  // gltf_json_text has checked the header
+    while (json.size() % 4 != 0) json += ' ';
+    const std::string rest = bytes.substr(20 + old_length);
+    std::string out = bytes.substr(0, 12);
+    const auto length = static_cast<uint32_t>(json.size());
+    const auto total = static_cast<uint32_t>(20 + json.size() + rest.size());
+    std::memcpy(&out[8], &total, 4);
+    out.append(reinterpret_cast<const char*>(&length), 4);
+    out += "JSON";
+    return out + json + rest;
+}
+
+// The glTF extensions a file may require: the ones rayo implements.
+const std::set<std::string> kSupportedRequiredExtensions = {kDracoExtension};
+
 // A glTF loader must refuse a file whose `extensionsRequired` names an extension it does not
-// implement (glTF 2.0 specification, 3.12). rayo implements none of them yet; Draco-compressed
-// meshes (KHR_draco_mesh_compression) are the common case.
-void refuse_required_extensions(const std::string& json_text, const std::string& path) {
-    const nlohmann::json root =
-        nlohmann::json::parse(json_text, nullptr, /*allow_exceptions=*/false);
+// implement (glTF 2.0 specification, 3.12); each one is named.
+void refuse_required_extensions(const nlohmann::json& root, const std::string& path) {
     if (!root.is_object()) return;  // tinygltf reports the malformed file
     const auto required = root.find("extensionsRequired");
     if (required == root.end() || !required->is_array() || required->empty()) return;
     std::string names;
     for (const auto& name : *required) {
+        if (name.is_string() && kSupportedRequiredExtensions.count(name.get<std::string>())) {
+            continue;
+        }
         names += (names.empty() ? "" : ", ") +
                  (name.is_string() ? name.get<std::string>() : name.dump());
     }
+    if (names.empty()) return;
+    std::string supported;
+    for (const std::string& name : kSupportedRequiredExtensions) {
+        supported += (supported.empty() ? "" : ", ") + name;
+    }
     throw InputError(path, "the file requires glTF extension(s) " + names +
-                               ", which rayo does not support (it supports no required extension)");
+                               ", which rayo does not support (it supports " + supported + ")");
 }
 
 }  // namespace
@@ -865,20 +891,31 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
     tinygltf::Model model;
     std::string err, warn;
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-    refuse_required_extensions(gltf_json_text(bytes, binary), path);
-    const auto size = static_cast<unsigned int>(bytes.size());  // < kMaxMeshFileBytes
+    const std::string json_text = gltf_json_text(bytes, binary);
+    nlohmann::json root = nlohmann::json::parse(json_text, nullptr, /*allow_exceptions=*/false);
+    refuse_required_extensions(root, path);
+    // Draco-compressed primitives: tinygltf reads the file without their indices, and
+    // decode_draco_primitives gives them decoded ones (apps/scene/gltf_draco.h).
+    std::string stripped;
+    if (root.is_object() && strip_draco_indices(root)) {
+        stripped = binary ? replace_glb_json(bytes, root.dump()) : root.dump();
+    }
+    const std::string& input = stripped.empty() ? bytes : stripped;
+    const auto size = static_cast<unsigned int>(input.size());  // < kMaxMeshFileBytes + padding
     const std::string dir = parent_directory(path);
     const bool ok =
         binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
-                                             reinterpret_cast<const unsigned char*>(bytes.data()),
+                                             reinterpret_cast<const unsigned char*>(input.data()),
                                              size, dir)
-               : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, dir);
+               : loader.LoadASCIIFromString(&model, &err, &warn, input.data(), size, dir);
     if (!ok) {
         // A referenced file refused by read_input_file: its own message, not tinygltf's.
         if (files.refusal) throw *files.refusal;
         throw InputError(path, std::string("malformed glTF") + (binary ? " binary" : "") + ": " +
                                    one_line(err.empty() ? "cannot parse" : err));
     }
+
+    decode_draco_primitives(model, path);
 
     std::vector<Material> converted;
     for (size_t i = 0; i < model.materials.size(); ++i) {
@@ -924,11 +961,11 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
 
 // ---- Shared helpers -----------------------------------------------------------------------
 
-const char* const kMeshFileKinds = ".obj, .gltf or .glb";
+const char* const kMeshFileKinds = ".obj, .gltf, .glb, .ply, .stl or .off";
 
 bool is_mesh_file(const std::string& path) {
     const std::string ext = lower_extension(path);
-    return ext == ".obj" || ext == ".gltf" || ext == ".glb";
+    return ext == ".obj" || ext == ".gltf" || ext == ".glb" || is_assimp_mesh_file(path);
 }
 
 ImportedMesh import_mesh_file(const std::string& path, std::vector<Material>& materials,
@@ -940,6 +977,8 @@ ImportedMesh import_mesh_file(const std::string& path, std::vector<Material>& ma
         out.mesh = load_obj(path, materials, where, &out.stats, options.access);
     } else if (ext == ".gltf" || ext == ".glb") {
         out.mesh = load_gltf(path, materials, where, &out.stats, options.access);
+    } else if (is_assimp_mesh_file(path)) {
+        out.mesh = load_assimp_mesh(path, materials, where, &out.stats, options.access);
     } else {
         throw InputError(where, "unknown mesh file format '" + ext + "' of '" + path +
                                     "': expected " + kMeshFileKinds);

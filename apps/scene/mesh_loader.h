@@ -42,7 +42,7 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
                        const FileAccess& access = {});
 
 // The model file extensions import_mesh_file reads (lower case, with the dot), and the same as
-// words for messages (".obj, .gltf or .glb").
+// words for messages (".obj, .gltf, .glb, .ply, .stl or .off").
 bool is_mesh_file(const std::string& path);
 extern const char* const kMeshFileKinds;
 
@@ -58,8 +58,8 @@ struct ImportedMesh {
     MeshImportStats stats;  // degenerate_triangles: the loader's and the transform's together
 };
 
-// The mesh file at `path` by its extension (load_obj, load_gltf), transformed, with the
-// degenerate triangles the transform makes dropped too. A dropped triangle is counted and
+// The mesh file at `path` by its extension (load_obj, load_gltf, load_assimp_mesh), transformed,
+// with the degenerate triangles the transform makes dropped too. A dropped triangle is counted and
 // reported by a warning in stats.warnings ("where: dropped N degenerate ..."); an unknown
 // extension, a mesh left without triangles, or a transformed coordinate beyond the scene's
 // magnitudes is an InputError.
