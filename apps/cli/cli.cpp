@@ -445,7 +445,7 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
         } else if (a == "--stats") {
             r.stats = true;
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option '" + a + "' (see rayo --help)");
+            throw UsageError("unknown option '" + a + "' (see rayo render --help)");
         } else if (!r.scene_path) {
             r.scene_path = a;
         } else {
@@ -932,7 +932,7 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
         } else if (a == "--seed") {
             seed = static_cast<uint32_t>(parse_int(a, cursor.value(), 0, 2147483647));
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option '" + a + "' (see rayo --help)");
+            throw UsageError("unknown option '" + a + "' (see rayo texture --help)");
         } else if (!name) {
             name = a;
         } else {
@@ -989,7 +989,7 @@ PreviewArgs parse_preview_args(const std::vector<std::string>& args) {
         } else if (kWithoutValue.count(a)) {
             render_args.push_back(a);
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option '" + a + "' (see rayo --help)");
+            throw UsageError("unknown option '" + a + "' (see rayo preview --help)");
         } else if (!scene_seen) {
             scene_seen = true;
             render_args.push_back(a);

@@ -342,10 +342,10 @@ TEST_F(BadInputJson, MissingMeshFiles) {
              "cannot open mesh file 'none.obj': No such file or directory"},
             {"missing glb in a folder", with_object(R"({"type": "mesh", "file": "no/none.glb"})"),
              "bad.json#/objects/0/file", "'no/none.glb'"},
-            {"unknown mesh format", with_object(R"({"type": "mesh", "file": "a.stl"})"),
-             "bad.json#/objects/0/file", ".obj, .gltf or .glb"},
+            {"unknown mesh format", with_object(R"({"type": "mesh", "file": "a.fbx"})"),
+             "bad.json#/objects/0/file", ".obj, .gltf, .glb, .ply, .stl or .off"},
             {"folder as mesh", with_object(R"({"type": "mesh", "file": "."})"),
-             "bad.json#/objects/0/file", ".obj, .gltf or .glb"},
+             "bad.json#/objects/0/file", ".obj, .gltf, .glb, .ply, .stl or .off"},
         });
 }
 

@@ -67,6 +67,14 @@ TEST_F(HelpCli, EachCommandHasItsOwnHelp) {
     EXPECT_EQ(r.exit_code, 0);
     EXPECT_TRUE(contains(r.output, "usage: rayo render")) << r.output;
     EXPECT_FALSE(std::filesystem::exists(m_dir / "out.png"));
+    // An unknown flag points at the command's own help.
+    for (const std::string command : {"render", "preview", "texture marble"}) {
+        const CommandResult bad = run(command + " --frobnicate");
+        EXPECT_EQ(bad.exit_code, 2) << bad.output;
+        EXPECT_TRUE(
+            contains(bad.output, "(see rayo " + command.substr(0, command.find(' ')) + " --help)"))
+            << bad.output;
+    }
 }
 
 // An ASCII PLY quad with vertex colours, and the same quad as a binary STL.
