@@ -50,11 +50,14 @@ constexpr int kExitUsage = 2;
 constexpr int kMaxDepthLimit = 64;
 constexpr int kMaxSpp = 1 << 16;
 
-const char* const kUsage = R"(rayo — a Whitted ray tracer (Embree + TBB + OpenImageIO + OpenColorIO)
+// `rayo --help`: the commands and every input rayo reads (kInputs); each command's own usage
+// and flags are its help (`rayo render --help`, command_help).
+const char* const kOverview =
+    R"(rayo — a Whitted ray tracer (Embree + TBB + OpenImageIO + OpenColorIO)
 
 usage:
-  rayo render [SCENE] [options]   render SCENE (.json or .nff, or an .obj, .gltf or .glb model,
-                                  framed automatically); the built-in scene without one
+  rayo render [SCENE] [options]   render SCENE (a scene, or a model file framed automatically);
+                                  the built-in scene without one
   rayo info SCENE                 load SCENE and print what it contains
   rayo bench accuracy -o DIR [--size N] [--only spheres|shapes]
                                   the sphere- and shape-method studies: CSV and charts
@@ -64,7 +67,33 @@ usage:
   rayo texture NAME [options]     write a procedural texture flat (the plane z = 0)
   rayo preview [SCENE] [options]  draw every object's outline from SCENE's camera, in well
                                   under a second: framing before a long render
+  rayo COMMAND --help             that command's usage and options
   rayo --help | --version
+
+)";
+
+// The inputs, by extension (case-insensitive): in rayo --help and in the help of the commands
+// that read a scene.
+const char* const kInputs =
+    R"(inputs (SCENE, by its extension, case-insensitive; docs/scene-format.md):
+  .json                    rayo's scene format
+  .nff                     Neutral File Format (the SPD scenes)
+  model files, framed automatically (camera, key and fill light, ground), also the files a
+  JSON "mesh" object may name:
+  .obj                     Wavefront OBJ, with its .mtl material libraries
+  .gltf, .glb              glTF 2.0, also Draco-compressed (KHR_draco_mesh_compression)
+  .ply                     Stanford PLY, ASCII or binary, with vertex colours and normals
+  .stl                     STL, ASCII or binary
+  .off                     Object File Format
+
+)";
+
+const char* const kOcioNote =
+    "The OCIO config is $OCIO when set, else rayo's own (sRGB display: sRGB, ACES 1.0 "
+    "SDR-video, Raw).\n";
+
+const char* const kRenderHelp = R"(usage: rayo render [SCENE] [options]
+  render SCENE; the built-in scene without one
 
 render options:
   -o, --output FILE        output image: .exr (linear float), .png, .tif, .jpg (display view)
@@ -122,6 +151,24 @@ render options:
   --quiet                  no progress bar and no summary line
   --stats                  print the full statistics table
 
+)";
+
+const char* const kInfoHelp = R"(usage: rayo info SCENE
+  load SCENE and print what it contains: resolution and field of view, objects by kind,
+  meshes, triangles, vertices, materials, lights, bounds and the load's warnings (a model file
+  without the ground square of its framing); no options
+
+)";
+
+const char* const kBenchHelp =
+    R"(usage: rayo bench accuracy -o DIR [--size N] [--only spheres|shapes]
+       rayo bench suite [options]
+
+bench accuracy options (docs/stability.md, docs/shape-methods.md):
+  -o, --output DIR         write the CSV files and charts (gnuplot) there (required)
+  --size N                 scenes of N×N pixels [384]
+  --only spheres|shapes    only the sphere-method or the shape-method study
+
 bench suite options:
   -o, --output DIR         write the files there (and --povray's scenes and logs)
   --size N                 SPD size of every scene [3]
@@ -132,6 +179,11 @@ bench suite options:
                            in a temporary folder without -o)
   --write-nff              write DIR/NAME_SIZE.nff for each scene instead of rendering
 
+)";
+
+const char* const kTextureHelp = R"(usage: rayo texture NAME [options]
+  write a procedural texture flat (the plane z = 0)
+
 texture NAME is one of (docs/textures.md):
   @TEXTURE_KINDS@
 texture options:
@@ -140,6 +192,12 @@ texture options:
   --scale S                world units per feature, 1e-6..1e6 [1: the seed's 64-pixel cells]
   --seed N                 0..2147483647 [0]
 
+)";
+
+const char* const kPreviewHelp = R"(usage: rayo preview [SCENE] [options]
+  draw every object's outline from SCENE's camera, in well under a second: framing before a
+  long render
+
 preview options (docs/preview.md):
   -o, --output FILE        output image, as for render [SCENE's name with -preview.png]
   --width W, --height H    resolution, as for render
@@ -147,14 +205,26 @@ preview options (docs/preview.md):
   --threads N              worker threads for --over-render [all cores]
   --nff-light-intensity X, --display D, --view V, --quiet   as for render
 
-The OCIO config is $OCIO when set, else rayo's own (sRGB display: sRGB, ACES 1.0 SDR-video, Raw).
 )";
 
-// kUsage with the texture kinds filled in from their one list (shading/texture.h).
+// rayo --help.
 std::string usage() {
-    std::string text = kUsage;
-    const std::string slot = "@TEXTURE_KINDS@";
-    return text.replace(text.find(slot), slot.size(), texture_kind_list());
+    return std::string(kOverview) + kInputs + kOcioNote;
+}
+
+// `rayo COMMAND --help`: the command's usage and flags (the inputs too for commands that read a
+// scene); the texture kinds filled in from their one list (shading/texture.h).
+std::string command_help(const std::string& command) {
+    if (command == "render") return std::string(kRenderHelp) + kInputs + kOcioNote;
+    if (command == "info") return std::string(kInfoHelp) + kInputs;
+    if (command == "bench") return kBenchHelp;
+    if (command == "preview") return std::string(kPreviewHelp) + kInputs + kOcioNote;
+    if (command == "texture") {
+        std::string text = kTextureHelp;
+        const std::string slot = "@TEXTURE_KINDS@";
+        return text.replace(text.find(slot), slot.size(), texture_kind_list()) + kOcioNote;
+    }
+    return usage();  // an unknown command: the overview
 }
 
 struct UsageError : std::runtime_error {
@@ -375,7 +445,7 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
         } else if (a == "--stats") {
             r.stats = true;
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option '" + a + "' (see rayo --help)");
+            throw UsageError("unknown option '" + a + "' (see rayo render --help)");
         } else if (!r.scene_path) {
             r.scene_path = a;
         } else {
@@ -865,7 +935,7 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
         } else if (a == "--seed") {
             seed = static_cast<uint32_t>(parse_int(a, cursor.value(), 0, 2147483647));
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option '" + a + "' (see rayo --help)");
+            throw UsageError("unknown option '" + a + "' (see rayo texture --help)");
         } else if (!name) {
             name = a;
         } else {
@@ -922,7 +992,7 @@ PreviewArgs parse_preview_args(const std::vector<std::string>& args) {
         } else if (kWithoutValue.count(a)) {
             render_args.push_back(a);
         } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option '" + a + "' (see rayo --help)");
+            throw UsageError("unknown option '" + a + "' (see rayo preview --help)");
         } else if (!scene_seen) {
             scene_seen = true;
             render_args.push_back(a);
@@ -1139,7 +1209,7 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
         }
         for (const std::string& a : args) {
             if (a == "--help" || a == "-h") {
-                out << usage();
+                out << command_help(command);
                 return 0;
             }
         }

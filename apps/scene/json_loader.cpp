@@ -1710,23 +1710,24 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
                              std::vector<TriangleMesh>& meshes) {
     check_keys(value, pointer, {"type", "file", "material", "transform", "smooth"});
     const std::string file_pointer = child(pointer, "file");
-    const Json& file = require(value, pointer, "file", "a path to an .obj, .gltf or .glb file");
+    const std::string expected = std::string("a path to an ") + kMeshFileKinds + " file";
+    const Json& file = require(value, pointer, "file", expected);
     if (!file.is_string() || file.get<std::string>().empty()) {
-        fail(file_pointer, "expected a path to an .obj, .gltf or .glb file, got " + describe(file));
+        fail(file_pointer, "expected " + expected + ", got " + describe(file));
     }
     const auto relative = file.get<std::string>();
     const std::string path = join_path(m_base_dir, relative);
-    const std::string ext = lower_extension(path);
-    if (ext != ".obj" && ext != ".gltf" && ext != ".glb") {
-        fail(file_pointer, "expected a path to an .obj, .gltf or .glb file, got " + describe(file));
-    }
+    if (!is_mesh_file(path)) fail(file_pointer, "expected " + expected + ", got " + describe(file));
     require_input_file(path, m_source + "#" + file_pointer, "mesh file", kMaxMeshFileBytes,
                        m_access);
     const bool overridden = find(value, "material") != nullptr;
     const uint32_t override_id = material_of(value, pointer);
-    glm::dmat4 transform(1.0);
+    MeshImportOptions options;
+    options.where = m_source + "#" + file_pointer;
+    options.access = m_access;
     if (const Json* t = find(value, "transform")) {
-        transform = parse_transform(*t, child(pointer, "transform"));
+        options.transform = parse_transform(*t, child(pointer, "transform"));
+        options.transform_where = m_source + "#" + child(pointer, "transform");
     }
     std::optional<bool> smooth;
     if (const Json* s = find(value, "smooth")) {
@@ -1738,25 +1739,9 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
     // With a material override the file's materials are read (and checked) but not kept.
     std::vector<Material> scratch = out.shading.materials;
     std::vector<Material>& materials = overridden ? scratch : out.shading.materials;
-    const std::string where = m_source + "#" + file_pointer;
-    MeshImportStats stats;
-    TriangleMesh mesh = ext == ".obj" ? load_obj(path, materials, where, &stats, m_access)
-                                      : load_gltf(path, materials, where, &stats, m_access);
+    ImportedMesh imported = import_mesh_file(path, materials, options);
+    TriangleMesh& mesh = imported.mesh;
     if (overridden) std::fill(mesh.materials.begin(), mesh.materials.end(), override_id);
-
-    transform_mesh(mesh, transform);
-    for (const Vec3& p : mesh.positions) {
-        if (!within_scene_magnitude(max_abs_component(p))) {
-            fail(child(pointer, "transform"),
-                 std::string("the transformed mesh does not fit in floats: every coordinate "
-                             "must be ") +
-                     kSceneMagnitudeRule);
-        }
-    }
-    stats.degenerate_triangles += drop_degenerate_triangles(mesh);
-    if (mesh.triangles.empty()) {
-        fail(file_pointer, "mesh '" + path + "' has no non-degenerate triangles");
-    }
     if (smooth.has_value()) {
         if (!*smooth) {
             mesh.normals.clear();  // flat: shade with the geometric normal
@@ -1764,12 +1749,9 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
             compute_vertex_normals(mesh);
         }
     }
-    out.warnings.insert(out.warnings.end(), stats.warnings.begin(), stats.warnings.end());
-    if (stats.degenerate_triangles > 0) {  // dropped, not refused: reported by the CLI
-        out.warnings.push_back(where + ": dropped " + std::to_string(stats.degenerate_triangles) +
-                               " degenerate (zero-area) triangle(s) of '" + path + "'");
-        out.skipped_triangles += stats.degenerate_triangles;
-    }
+    out.warnings.insert(out.warnings.end(), imported.stats.warnings.begin(),
+                        imported.stats.warnings.end());
+    out.skipped_triangles += imported.stats.degenerate_triangles;
     meshes.push_back(std::move(mesh));
 }
 

@@ -24,14 +24,16 @@
 #include <utility>
 #include <vector>
 
+#include "apps/scene/assimp_loader.h"
+#include "apps/scene/gltf_draco.h"
 #include "apps/scene/input_file.h"
 #include "core/error.h"
+#include "core/math.h"
 #include "core/path_util.h"
 #include "core/scene.h"
 #include "core/scene_limits.h"
 
 namespace rayo {
-namespace {
 
 std::string file_name(const std::string& path) {
     const size_t slash = path.find_last_of('/');
@@ -47,6 +49,23 @@ std::string one_line(std::string text) {
     return text;
 }
 
+// "path:line" when a parser's message names a line, else the path.
+std::string place_with_line(const std::string& path, const std::string& message) {
+    static const std::regex line_pattern(R"(line:?\s*(\d+))");
+    std::smatch match;
+    if (std::regex_search(message, match, line_pattern)) return path + ":" + match[1].str();
+    return path;
+}
+
+void check_mesh_not_empty(const TriangleMesh& mesh, const std::string& path,
+                          const std::string& where) {
+    if (mesh.triangles.empty()) {
+        throw InputError(where, "mesh file '" + path + "' contains no (non-degenerate) triangles");
+    }
+}
+
+namespace {
+
 bool finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -54,13 +73,6 @@ bool finite(const Vec3& v) {
 void require_colour(const Vec3& c, const std::string& where, const std::string& what) {
     if (!finite(c) || c.x < 0.0f || c.y < 0.0f || c.z < 0.0f) {
         throw InputError(where, what + " must be finite and >= 0");
-    }
-}
-
-void check_mesh_not_empty(const TriangleMesh& mesh, const std::string& path,
-                          const std::string& where) {
-    if (mesh.triangles.empty()) {
-        throw InputError(where, "mesh file '" + path + "' contains no (non-degenerate) triangles");
     }
 }
 
@@ -90,14 +102,6 @@ Material material_from_mtl(const tinyobj::material_t& m, const std::string& wher
     if (!std::isfinite(m.ior)) throw InputError(where, what + "Ni must be finite");
     out.ior = m.ior > 0.0f ? static_cast<float>(m.ior) : 1.0f;  // Ni <= 0: unset
     return out;
-}
-
-// "path:line" when tinyobjloader's message names a line, else the path.
-std::string obj_place(const std::string& path, const std::string& message) {
-    static const std::regex line_pattern(R"(line:?\s*(\d+))");
-    std::smatch match;
-    if (std::regex_search(message, match, line_pattern)) return path + ":" + match[1].str();
-    return path;
 }
 
 // One corner of an `f` statement: "v", "v/vt", "v//vn" or "v/vt/vn". OBJ indices are 1-based,
@@ -306,7 +310,7 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
                                      /*default_vcols_fallback=*/false);
     if (!ok || !err.empty()) {
         const std::string message = one_line(err.empty() ? warn : err);
-        throw InputError(obj_place(path, message),
+        throw InputError(place_with_line(path, message),
                          "malformed OBJ: " + (message.empty() ? "cannot parse" : message));
     }
     // A missing material library is a warning (assets often travel without theirs): its faces
@@ -322,7 +326,7 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
     if (mtl_reader.missing.empty() && (warn.find("not found") != std::string::npos ||
                                        warn.find("Failed to load material") != std::string::npos)) {
         const std::string message = one_line(warn);
-        throw InputError(obj_place(path, message), "OBJ materials: " + message);
+        throw InputError(place_with_line(path, message), "OBJ materials: " + message);
     }
 
     std::vector<Material> converted;
@@ -832,22 +836,46 @@ std::string gltf_json_text(const std::string& bytes, bool binary) {
     return length <= bytes.size() - 20 ? bytes.substr(20, length) : std::string();
 }
 
+// The .glb `bytes` with its JSON chunk replaced by `json` (padded with spaces to 4 bytes, as
+// the container requires); the chunks after it are kept as they are.
+std::string replace_glb_json(const std::string& bytes, std::string json) {
+    uint32_t old_length = 0;
+    std::memcpy(&old_length, bytes.data() + 12, 4);  // gltf_json_text has checked the header
+    while (json.size() % 4 != 0) json += ' ';
+    const std::string rest = bytes.substr(20 + old_length);
+    std::string out = bytes.substr(0, 12);
+    const auto length = static_cast<uint32_t>(json.size());
+    const auto total = static_cast<uint32_t>(20 + json.size() + rest.size());
+    std::memcpy(&out[8], &total, 4);
+    out.append(reinterpret_cast<const char*>(&length), 4);
+    out += "JSON";
+    return out + json + rest;
+}
+
+// The glTF extensions a file may require: the ones rayo implements.
+const std::set<std::string> kSupportedRequiredExtensions = {kDracoExtension};
+
 // A glTF loader must refuse a file whose `extensionsRequired` names an extension it does not
-// implement (glTF 2.0 specification, 3.12). rayo implements none of them yet; Draco-compressed
-// meshes (KHR_draco_mesh_compression) are the common case.
-void refuse_required_extensions(const std::string& json_text, const std::string& path) {
-    const nlohmann::json root =
-        nlohmann::json::parse(json_text, nullptr, /*allow_exceptions=*/false);
+// implement (glTF 2.0 specification, 3.12); each one is named.
+void refuse_required_extensions(const nlohmann::json& root, const std::string& path) {
     if (!root.is_object()) return;  // tinygltf reports the malformed file
     const auto required = root.find("extensionsRequired");
     if (required == root.end() || !required->is_array() || required->empty()) return;
     std::string names;
     for (const auto& name : *required) {
+        if (name.is_string() && kSupportedRequiredExtensions.count(name.get<std::string>())) {
+            continue;
+        }
         names += (names.empty() ? "" : ", ") +
                  (name.is_string() ? name.get<std::string>() : name.dump());
     }
+    if (names.empty()) return;
+    std::string supported;
+    for (const std::string& name : kSupportedRequiredExtensions) {
+        supported += (supported.empty() ? "" : ", ") + name;
+    }
     throw InputError(path, "the file requires glTF extension(s) " + names +
-                               ", which rayo does not support (it supports no required extension)");
+                               ", which rayo does not support (it supports " + supported + ")");
 }
 
 }  // namespace
@@ -863,20 +891,31 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
     tinygltf::Model model;
     std::string err, warn;
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-    refuse_required_extensions(gltf_json_text(bytes, binary), path);
-    const auto size = static_cast<unsigned int>(bytes.size());  // < kMaxMeshFileBytes
+    const std::string json_text = gltf_json_text(bytes, binary);
+    nlohmann::json root = nlohmann::json::parse(json_text, nullptr, /*allow_exceptions=*/false);
+    refuse_required_extensions(root, path);
+    // Draco-compressed primitives: tinygltf reads the file without their indices, and
+    // decode_draco_primitives gives them decoded ones (apps/scene/gltf_draco.h).
+    std::string stripped;
+    if (root.is_object() && strip_draco_indices(root)) {
+        stripped = binary ? replace_glb_json(bytes, root.dump()) : root.dump();
+    }
+    const std::string& input = stripped.empty() ? bytes : stripped;
+    const auto size = static_cast<unsigned int>(input.size());  // < kMaxMeshFileBytes + padding
     const std::string dir = parent_directory(path);
     const bool ok =
         binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
-                                             reinterpret_cast<const unsigned char*>(bytes.data()),
+                                             reinterpret_cast<const unsigned char*>(input.data()),
                                              size, dir)
-               : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, dir);
+               : loader.LoadASCIIFromString(&model, &err, &warn, input.data(), size, dir);
     if (!ok) {
         // A referenced file refused by read_input_file: its own message, not tinygltf's.
         if (files.refusal) throw *files.refusal;
         throw InputError(path, std::string("malformed glTF") + (binary ? " binary" : "") + ": " +
                                    one_line(err.empty() ? "cannot parse" : err));
     }
+
+    decode_draco_primitives(model, path);
 
     std::vector<Material> converted;
     for (size_t i = 0; i < model.materials.size(); ++i) {
@@ -921,6 +960,50 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
 }
 
 // ---- Shared helpers -----------------------------------------------------------------------
+
+const char* const kMeshFileKinds = ".obj, .gltf, .glb, .ply, .stl or .off";
+
+bool is_mesh_file(const std::string& path) {
+    const std::string ext = lower_extension(path);
+    return ext == ".obj" || ext == ".gltf" || ext == ".glb" || is_assimp_mesh_file(path);
+}
+
+ImportedMesh import_mesh_file(const std::string& path, std::vector<Material>& materials,
+                              const MeshImportOptions& options) {
+    const std::string& where = options.where;
+    const std::string ext = lower_extension(path);
+    ImportedMesh out;
+    if (ext == ".obj") {
+        out.mesh = load_obj(path, materials, where, &out.stats, options.access);
+    } else if (ext == ".gltf" || ext == ".glb") {
+        out.mesh = load_gltf(path, materials, where, &out.stats, options.access);
+    } else if (is_assimp_mesh_file(path)) {
+        out.mesh = load_assimp_mesh(path, materials, where, &out.stats, options.access);
+    } else {
+        throw InputError(where, "unknown mesh file format '" + ext + "' of '" + path +
+                                    "': expected " + kMeshFileKinds);
+    }
+    TriangleMesh& mesh = out.mesh;
+    transform_mesh(mesh, options.transform);
+    if (!options.transform_where.empty()) {
+        for (const Vec3& p : mesh.positions) {
+            if (!within_scene_magnitude(max_abs_component(p))) {
+                throw InputError(options.transform_where,
+                                 std::string("the transformed mesh does not fit in floats: every "
+                                             "coordinate must be ") +
+                                     kSceneMagnitudeRule);
+            }
+        }
+    }
+    out.stats.degenerate_triangles += drop_degenerate_triangles(mesh);
+    check_mesh_not_empty(mesh, path, where);
+    if (out.stats.degenerate_triangles > 0) {  // dropped, not refused: reported by the CLI
+        out.stats.warnings.push_back(
+            where + ": dropped " + std::to_string(out.stats.degenerate_triangles) +
+            " degenerate (zero-area) triangle(s)" + (where == path ? "" : " of '" + path + "'"));
+    }
+    return out;
+}
 
 void transform_mesh(TriangleMesh& mesh, const glm::dmat4& transform) {
     for (auto& p : mesh.positions) {

@@ -41,6 +41,41 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
                        const std::string& where, MeshImportStats* stats = nullptr,
                        const FileAccess& access = {});
 
+// The model file extensions import_mesh_file reads (lower case, with the dot), and the same as
+// words for messages (".obj, .gltf, .glb, .ply, .stl or .off").
+bool is_mesh_file(const std::string& path);
+extern const char* const kMeshFileKinds;
+
+struct MeshImportOptions {
+    std::string where;  // the caller's place, named in errors (e.g. "s.json#/objects/2/file")
+    glm::dmat4 transform{1.0};    // applied to the file's mesh before degenerate faces are dropped
+    std::string transform_where;  // named when the transformed mesh leaves the scene's magnitudes
+    FileAccess access;
+};
+
+struct ImportedMesh {
+    TriangleMesh mesh;
+    MeshImportStats stats;  // degenerate_triangles: the loader's and the transform's together
+};
+
+// The mesh file at `path` by its extension (load_obj, load_gltf, load_assimp_mesh), transformed,
+// with the degenerate triangles the transform makes dropped too. A dropped triangle is counted and
+// reported by a warning in stats.warnings ("where: dropped N degenerate ..."); an unknown
+// extension, a mesh left without triangles, or a transformed coordinate beyond the scene's
+// magnitudes is an InputError.
+ImportedMesh import_mesh_file(const std::string& path, std::vector<Material>& materials,
+                              const MeshImportOptions& options);
+
+// Helpers the mesh loaders share (mesh_loader.cpp, assimp_loader.cpp).
+std::string file_name(const std::string& path);  // the last path component
+// A parser's (possibly multi-line) report as one line, trailing blanks trimmed.
+std::string one_line(std::string text);
+// "path:line" when `message` names a line ("line 12", "line: 12"), else `path`.
+std::string place_with_line(const std::string& path, const std::string& message);
+// InputError(where, "mesh file 'path' contains no (non-degenerate) triangles") when it has none.
+void check_mesh_not_empty(const TriangleMesh& mesh, const std::string& path,
+                          const std::string& where);
+
 // Applies an affine transform to positions and (by the inverse transpose) normals; a transform
 // that mirrors (negative determinant) also flips the winding so faces keep their orientation.
 void transform_mesh(TriangleMesh& mesh, const glm::dmat4& transform);

@@ -5,7 +5,6 @@
 
 #include "apps/scene/mesh_loader.h"
 #include "core/error.h"
-#include "core/path_util.h"
 #include "shading/directional_light.h"
 
 namespace rayo {
@@ -45,8 +44,7 @@ Light directional_light(const Vec3& from, float intensity) {
 }  // namespace
 
 bool is_model_file(const std::string& path) {
-    const std::string ext = lower_extension(path);
-    return ext == ".obj" || ext == ".gltf" || ext == ".glb";
+    return is_mesh_file(path);
 }
 
 SceneDescription load_model_scene(const std::string& path, const ModelFraming& framing,
@@ -56,20 +54,13 @@ SceneDescription load_model_scene(const std::string& path, const ModelFraming& f
     Material fallback;
     fallback.name = "default";
     d.shading.materials.push_back(fallback);
-    MeshImportStats stats;
-    TriangleMesh mesh = lower_extension(path) == ".obj"
-                            ? load_obj(path, d.shading.materials, path, &stats, access)
-                            : load_gltf(path, d.shading.materials, path, &stats, access);
-    d.warnings = stats.warnings;
-    stats.degenerate_triangles += drop_degenerate_triangles(mesh);
-    if (mesh.triangles.empty()) {
-        throw InputError(path, "the model has no non-degenerate triangles");
-    }
-    if (stats.degenerate_triangles > 0) {
-        d.warnings.push_back(path + ": dropped " + std::to_string(stats.degenerate_triangles) +
-                             " degenerate (zero-area) triangle(s)");
-        d.skipped_triangles = stats.degenerate_triangles;
-    }
+    MeshImportOptions options;
+    options.where = path;
+    options.access = access;
+    ImportedMesh imported = import_mesh_file(path, d.shading.materials, options);
+    TriangleMesh& mesh = imported.mesh;
+    d.warnings = imported.stats.warnings;
+    d.skipped_triangles = imported.stats.degenerate_triangles;
     const BoundingSphere bounds = bounding_sphere(mesh);
     if (!(bounds.radius > 0.0f) || !std::isfinite(bounds.radius)) {
         throw InputError(path, "the model's bounding box must have a finite, non-zero size");

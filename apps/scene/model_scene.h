@@ -18,7 +18,7 @@ struct ModelFraming {
     bool ground = true;
 };
 
-// Whether `path` names a model file (.obj, .gltf, .glb) rather than a scene.
+// Whether `path` names a model file (is_mesh_file: .obj, .gltf, .glb, .ply, .stl, .off).
 bool is_model_file(const std::string& path);
 
 // Loads the model at `path` (load_obj / load_gltf; their errors name `path`) into a scene.

@@ -1,6 +1,7 @@
 #include "apps/scene/scene_loader.h"
 
 #include "apps/scene/json_loader.h"
+#include "apps/scene/mesh_loader.h"
 #include "apps/scene/nff_loader.h"
 #include "core/error.h"
 #include "core/path_util.h"
@@ -21,7 +22,8 @@ SceneDescription load_scene_file(const std::string& path, const SceneLoadOptions
     }
     throw InputError(path, "unknown scene format '" + extension +
                                "': expected a .json (rayo) or .nff (Neutral File Format) scene, "
-                               "or an .obj, .gltf or .glb model");
+                               "or a model file (" +
+                               kMeshFileKinds + ")");
 }
 
 }  // namespace rayo

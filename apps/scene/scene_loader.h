@@ -1,7 +1,7 @@
 #pragma once
 // Loads a scene file by its extension: .json (native format), .nff (Standard Procedural
-// Databases), or a model file (.obj, .gltf, .glb) framed as apps/scene/model_scene.h says.
-// Errors are InputErrors naming the file and place.
+// Databases), or a model file (.obj, .gltf, .glb, .ply, .stl, .off) framed as
+// apps/scene/model_scene.h says. Errors are InputErrors naming the file and place.
 #include <string>
 
 #include "apps/scene/model_scene.h"

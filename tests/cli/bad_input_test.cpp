@@ -66,6 +66,7 @@ class BadInputNff : public BadInput {};
 class BadInputJson : public BadInput {};
 class BadInputObj : public BadInput {};
 class BadInputGltf : public BadInput {};
+class BadInputPlyStl : public BadInput {};
 class BadInputCli : public BadInput {};
 
 // ---- NFF ----------------------------------------------------------------------------------
@@ -341,10 +342,10 @@ TEST_F(BadInputJson, MissingMeshFiles) {
              "cannot open mesh file 'none.obj': No such file or directory"},
             {"missing glb in a folder", with_object(R"({"type": "mesh", "file": "no/none.glb"})"),
              "bad.json#/objects/0/file", "'no/none.glb'"},
-            {"unknown mesh format", with_object(R"({"type": "mesh", "file": "a.stl"})"),
-             "bad.json#/objects/0/file", ".obj, .gltf or .glb"},
+            {"unknown mesh format", with_object(R"({"type": "mesh", "file": "a.fbx"})"),
+             "bad.json#/objects/0/file", ".obj, .gltf, .glb, .ply, .stl or .off"},
             {"folder as mesh", with_object(R"({"type": "mesh", "file": "."})"),
-             "bad.json#/objects/0/file", ".obj, .gltf or .glb"},
+             "bad.json#/objects/0/file", ".obj, .gltf, .glb, .ply, .stl or .off"},
         });
 }
 
@@ -456,6 +457,25 @@ TEST_F(BadInputGltf, TruncatedFileAndMissingBuffer) {
     copy_data("binary.obj");  // not glTF's binary container
     fs::rename(m_dir / "binary.obj", m_dir / "m.glb");
     expect_refused("render scene.json -o out.png", "m.glb", "glTF", "not a glb");
+}
+
+// ---- PLY and STL (assimp), directly and through a JSON scene ---------------------------------
+
+TEST_F(BadInputPlyStl, TruncatedOutOfRangeAndEmptyFiles) {
+    const std::string header =
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    write("cut.ply", header + "0 0 0\n1 0");
+    expect_refused("render cut.ply -o out.png", "cut.ply:3", "PLY element 'vertex' declares 3",
+                   "truncated ply");
+    expect_refused("info cut.ply", "cut.ply:3", "truncated file?", "truncated ply, info");
+    write("far.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n");
+    expect_refused("render far.ply -o out.png", "far.ply", "vertex index 5 out of range",
+                   "face index out of range");
+    write("empty.stl", "");
+    expect_refused("render empty.stl -o out.png", "empty.stl", "empty STL", "empty stl");
+    write("scene.json", with_object(R"({"type": "mesh", "file": "far.ply"})"));
+    expect_refused("render scene.json -o out.png", "far.ply", "out of range", "ply in a scene");
 }
 
 // ---- the command line -----------------------------------------------------------------------

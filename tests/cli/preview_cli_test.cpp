@@ -78,7 +78,7 @@ TEST_F(PreviewCli, DefaultOutputIsTheScenesNameWithPreview) {
 }
 
 TEST_F(PreviewCli, HelpDescribesTheCommand) {
-    const CommandResult r = run("--help");
+    const CommandResult r = run("preview --help");
     ASSERT_EQ(r.exit_code, 0);
     EXPECT_NE(r.output.find("rayo preview [SCENE] [options]"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("--over-render"), std::string::npos) << r.output;

@@ -28,9 +28,9 @@ int cli(std::vector<std::string> args, std::string* err_text = nullptr) {
 
 // The help names every texture kind, from their one list (shading/texture.h).
 TEST(TextureCli, HelpListsEveryTextureKind) {
-    const char* argv[] = {"rayo", "--help"};
+    const char* argv[] = {"rayo", "texture", "--help"};
     std::ostringstream out, err;
-    ASSERT_EQ(run_cli(2, argv, out, err), 0);
+    ASSERT_EQ(run_cli(3, argv, out, err), 0);
     const std::string help = out.str();
     const std::string line = "NAME is one of (docs/textures.md):\n  " + texture_kind_list() + "\n";
     EXPECT_NE(help.find(line), std::string::npos) << help;

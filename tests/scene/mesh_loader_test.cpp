@@ -3,6 +3,8 @@
 // types, degenerate triangles, and the errors for missing and malformed files.
 #include "apps/scene/mesh_loader.h"
 
+#include <draco/compression/encode.h>
+#include <draco/mesh/mesh.h>
 #include <gtest/gtest.h>
 #include <sys/inotify.h>
 #include <unistd.h>
@@ -483,20 +485,23 @@ TEST(MeshLoaderGltf, BinaryGlbWithUnsignedByteIndices) {
 }
 
 TEST(MeshLoaderGltf, RequiredExtensionsAreNamedAndRefused) {
-    // A Draco-compressed file (its accessors have no bufferView, so tinygltf alone reports
-    // "invalid bufferView"), as .gltf and as .glb; a used-but-not-required extension is fine.
+    // An extension rayo does not implement (meshopt compression: its accessors have no
+    // bufferView, so tinygltf alone reports "invalid bufferView"), as .gltf and as .glb, named
+    // among the required ones; Draco (supported) is not named; a used-but-not-required
+    // extension is fine.
     for (const bool binary : {false, true}) {
         TempDir dir;
         GltfAsset a = make_gltf(5123);
-        a.doc["extensionsUsed"] = {"KHR_draco_mesh_compression", "KHR_materials_ior"};
-        a.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+        a.doc["extensionsUsed"] = {"EXT_meshopt_compression", "KHR_materials_ior"};
+        a.doc["extensionsRequired"] = {"KHR_draco_mesh_compression", "EXT_meshopt_compression"};
         a.doc["accessors"][0].erase("bufferView");
         const std::string path =
-            binary ? write_glb(dir, "draco.glb", a) : write_embedded(dir, "draco.gltf", a);
+            binary ? write_glb(dir, "meshopt.glb", a) : write_embedded(dir, "meshopt.gltf", a);
         std::vector<Material> materials;
         const InputError error = expect_input_error([&] { load_gltf(path, materials, "here"); });
         EXPECT_EQ(error.where(), path);
-        EXPECT_NE(error.message().find("KHR_draco_mesh_compression"), std::string::npos)
+        EXPECT_NE(error.message().find("requires glTF extension(s) EXT_meshopt_compression, "),
+                  std::string::npos)
             << error.message();
         EXPECT_NE(error.message().find("does not support"), std::string::npos) << error.message();
     }
@@ -506,6 +511,116 @@ TEST(MeshLoaderGltf, RequiredExtensionsAreNamedAndRefused) {
     const std::string path = write_embedded(dir, "used.gltf", used);
     std::vector<Material> materials;
     EXPECT_EQ(load_gltf(path, materials, "here").triangle_count(), 2u);
+}
+
+// The quad of make_gltf compressed with Draco's encoder (no quantization: lossless), with an
+// 8-bit colour per corner; the glTF names the Draco attributes by their unique ids and its
+// accessors have no bufferView (KHR_draco_mesh_compression).
+GltfAsset make_draco_gltf() {
+    const float positions[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    const uint8_t colours[4][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {51, 102, 255}};
+    draco::Mesh mesh;
+    mesh.set_num_points(4);
+    draco::GeometryAttribute position;
+    position.Init(draco::GeometryAttribute::POSITION, nullptr, 3, draco::DT_FLOAT32, false,
+                  3 * sizeof(float), 0);
+    const int pos = mesh.AddAttribute(position, true, 4);
+    draco::GeometryAttribute colour;
+    colour.Init(draco::GeometryAttribute::COLOR, nullptr, 3, draco::DT_UINT8, true, 3, 0);
+    const int col = mesh.AddAttribute(colour, true, 4);
+    for (int i = 0; i < 4; ++i) {
+        mesh.attribute(pos)->SetAttributeValue(draco::AttributeValueIndex(i), positions[i]);
+        mesh.attribute(col)->SetAttributeValue(draco::AttributeValueIndex(i), colours[i]);
+    }
+    mesh.AddFace({draco::PointIndex(0), draco::PointIndex(1), draco::PointIndex(2)});
+    mesh.AddFace({draco::PointIndex(1), draco::PointIndex(3), draco::PointIndex(2)});
+    draco::Encoder encoder;
+    draco::EncoderBuffer encoded;
+    EXPECT_TRUE(encoder.EncodeMeshToBuffer(mesh, &encoded).ok());
+
+    GltfAsset a;
+    a.bin.assign(encoded.data(), encoded.data() + encoded.size());
+    const size_t length = a.bin.size();
+    while (a.bin.size() % 4 != 0) a.bin.push_back(0);
+    const Json draco = {{"bufferView", 0},
+                        {"attributes",
+                         {{"POSITION", mesh.attribute(pos)->unique_id()},
+                          {"COLOR_0", mesh.attribute(col)->unique_id()}}}};
+    a.doc = {
+        {"asset", {{"version", "2.0"}}},
+        {"extensionsUsed", {"KHR_draco_mesh_compression"}},
+        {"extensionsRequired", {"KHR_draco_mesh_compression"}},
+        {"nodes", {{{"mesh", 0}}}},
+        {"meshes",
+         {{{"primitives",
+            {{{"attributes", {{"POSITION", 0}, {"COLOR_0", 1}}},
+              {"indices", 2},
+              {"extensions", {{"KHR_draco_mesh_compression", draco}}}}}}}}},
+        {"bufferViews", {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", length}}}},
+        {"accessors",
+         {{{"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+          {{"componentType", 5121}, {"normalized", true}, {"count", 4}, {"type", "VEC3"}},
+          {{"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}}},
+    };
+    return a;
+}
+
+TEST(MeshLoaderGltf, DracoCompressedMeshesDecoded) {
+    for (const bool binary : {false, true}) {
+        TempDir dir;
+        const GltfAsset a = make_draco_gltf();
+        const std::string path =
+            binary ? write_glb(dir, "draco.glb", a) : write_embedded(dir, "draco.gltf", a);
+        std::vector<Material> materials;
+        const TriangleMesh mesh = load_gltf(path, materials, "here");
+        ASSERT_EQ(mesh.triangle_count(), 2u) << binary;
+        ASSERT_EQ(mesh.positions.size(), 4u);
+        ASSERT_EQ(mesh.colors.size(), 4u);
+        // Draco may reorder the points: each position must keep its own colour, and the two
+        // triangles must cover the quad (total area 1).
+        float area = 0.0f;
+        for (const auto& t : mesh.triangles) {
+            area += 0.5f * glm::length(glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
+                                                  mesh.positions[t[2]] - mesh.positions[t[0]]));
+        }
+        EXPECT_NEAR(area, 1.0f, 1e-6f);
+        for (size_t i = 0; i < 4; ++i) {
+            const Vec3& p = mesh.positions[i];
+            const Vec3 expected = p == Vec3(0, 0, 0)   ? Vec3(1, 0, 0)
+                                  : p == Vec3(1, 0, 0) ? Vec3(0, 1, 0)
+                                  : p == Vec3(0, 1, 0) ? Vec3(0, 0, 1)
+                                                       : Vec3(0.2f, 0.4f, 1.0f);
+            expect_vec3(mesh.colors[i], expected.x, expected.y, expected.z, 1e-6f);
+        }
+    }
+}
+
+TEST(MeshLoaderGltf, BadDracoDataNamed) {
+    TempDir dir;
+    GltfAsset corrupt = make_draco_gltf();
+    std::fill(corrupt.bin.begin() + 8, corrupt.bin.end(), uint8_t{0xAB});  // header kept
+    std::vector<Material> materials;
+    const std::string c = write_embedded(dir, "corrupt.gltf", corrupt);
+    InputError error = expect_input_error([&] { load_gltf(c, materials, "here"); });
+    EXPECT_EQ(error.where(), c);
+    EXPECT_NE(error.message().find("mesh 0 primitive 0 (KHR_draco_mesh_compression)"),
+              std::string::npos)
+        << error.message();
+    GltfAsset missing = make_draco_gltf();
+    missing.doc["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]
+               ["attributes"]["COLOR_0"] = 77;
+    const std::string m = write_embedded(dir, "missing.gltf", missing);
+    error = expect_input_error([&] { load_gltf(m, materials, "here"); });
+    EXPECT_NE(error.message().find("COLOR_0: the Draco data has no attribute 77"),
+              std::string::npos)
+        << error.message();
+    GltfAsset far = make_draco_gltf();
+    far.doc["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]
+           ["bufferView"] = 5;
+    const std::string f = write_embedded(dir, "far.gltf", far);
+    error = expect_input_error([&] { load_gltf(f, materials, "here"); });
+    EXPECT_NE(error.message().find("bufferView 5 does not exist"), std::string::npos)
+        << error.message();
 }
 
 TEST(MeshLoaderGltf, ExternalBinWithUnsignedIntIndices) {

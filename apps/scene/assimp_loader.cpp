@@ -1,0 +1,236 @@
+#include "apps/scene/assimp_loader.h"
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "core/error.h"
+#include "core/math.h"
+#include "core/path_util.h"
+#include "core/scene_limits.h"
+
+namespace rayo {
+namespace {
+
+std::string format_name(const std::string& ext) {
+    if (ext == ".ply") return "PLY";
+    if (ext == ".stl") return "STL";
+    return "OFF";
+}
+
+// The smallest number of bytes one instance of a PLY element can take: in ASCII every property
+// is at least a digit and a separator, in binary its scalar's size (a list's count).
+uint64_t min_element_bytes(const std::vector<std::string>& property_types, bool ascii) {
+    uint64_t bytes = 0;
+    for (const std::string& type : property_types) {
+        if (ascii) {
+            bytes += 2;
+        } else if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") {
+            bytes += 1;
+        } else if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") {
+            bytes += 2;
+        } else if (type == "double" || type == "float64") {
+            bytes += 8;
+        } else {
+            bytes += 4;
+        }
+    }
+    return bytes > 0 ? bytes : 1;  // an element without properties still takes a line
+}
+
+// A PLY header's element counts against the bytes that follow it: assimp reserves memory for
+// every declared instance before reading one, so "element vertex 2000000000" in a small file
+// would take gigabytes. Headers it cannot parse are left to assimp's own message.
+void check_ply_header(const std::string& bytes, const std::string& path) {
+    const size_t end = bytes.find("end_header");
+    if (bytes.compare(0, 3, "ply") != 0 || end == std::string::npos) return;
+    const size_t body_start = bytes.find('\n', end);
+    const uint64_t body = body_start == std::string::npos ? 0 : bytes.size() - body_start - 1;
+    std::istringstream header(bytes.substr(0, end));
+    std::string line;
+    bool ascii = false;
+    struct Element {
+        std::string name;
+        uint64_t count = 0;
+        size_t line = 0;
+        std::vector<std::string> types;
+    };
+    std::vector<Element> elements;
+    size_t number = 0;
+    while (std::getline(header, line)) {
+        ++number;
+        std::istringstream in(line);
+        std::string keyword;
+        in >> keyword;
+        if (keyword == "format") {
+            std::string kind;
+            in >> kind;
+            ascii = kind == "ascii";
+        } else if (keyword == "element") {
+            Element e;
+            std::string count;
+            in >> e.name >> count;
+            if (count.empty() || count.find_first_not_of("0123456789") != std::string::npos ||
+                count.size() > 18) {
+                throw InputError(
+                    path + ":" + std::to_string(number),
+                    "PLY element '" + e.name + "': expected a count, got '" + count + "'");
+            }
+            e.count = std::stoull(count);
+            e.line = number;
+            elements.push_back(e);
+        } else if (keyword == "property" && !elements.empty()) {
+            std::string type;
+            in >> type;
+            if (type == "list") in >> type;  // the count's type: a list holds at least that
+            elements.back().types.push_back(type);
+        }
+    }
+    uint64_t needed = 0;
+    for (const Element& e : elements) {
+        const uint64_t each = min_element_bytes(e.types, ascii);
+        if (e.count > (body - needed) / each) {
+            throw InputError(path + ":" + std::to_string(e.line),
+                             "PLY element '" + e.name + "' declares " + std::to_string(e.count) +
+                                 " instances, more than the " + std::to_string(body) +
+                                 " bytes after the header can hold (truncated file?)");
+        }
+        needed += e.count * each;
+    }
+}
+
+// Every face's vertex indices within its mesh, as read (assimp's importers do not all check);
+// returns whether a face has three corners or more (post-processing drops points and lines).
+bool check_face_indices(const aiScene& scene, const std::string& path) {
+    bool any_polygon = false;
+    for (unsigned int m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh& mesh = *scene.mMeshes[m];
+        for (unsigned int f = 0; f < mesh.mNumFaces; ++f) {
+            const aiFace& face = mesh.mFaces[f];
+            any_polygon |= face.mNumIndices >= 3;
+            for (unsigned int k = 0; k < face.mNumIndices; ++k) {
+                if (face.mIndices[k] >= mesh.mNumVertices) {
+                    throw InputError(path, "face " + std::to_string(f) + ": vertex index " +
+                                               std::to_string(face.mIndices[k]) +
+                                               " out of range (the file has " +
+                                               std::to_string(mesh.mNumVertices) + " vertices)");
+                }
+            }
+        }
+    }
+    return any_polygon;
+}
+
+}  // namespace
+
+bool is_assimp_mesh_file(const std::string& path) {
+    const std::string ext = lower_extension(path);
+    return ext == ".ply" || ext == ".stl" || ext == ".off";
+}
+
+TriangleMesh load_assimp_mesh(const std::string& path, std::vector<Material>& materials,
+                              const std::string& where, MeshImportStats* stats,
+                              const FileAccess& access) {
+    const std::string bytes = read_input_file(path, where, "mesh file", kMaxMeshFileBytes, access);
+    const std::string ext = lower_extension(path);
+    const std::string format = format_name(ext);
+    if (bytes.empty()) throw InputError(path, "empty " + format + " file");
+    if (ext == ".ply") check_ply_header(bytes, path);
+
+    Assimp::Importer importer;
+    // Points and lines (PLY point clouds, edges) are dropped; faces are triangulated.
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    unsigned int flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                         aiProcess_SortByPType | aiProcess_PreTransformVertices;
+    if (ext == ".stl") {
+        // STL repeats every corner with its facet's normal: without the normals the corners
+        // join, and the mesh is shaded flat (as the facet normals would) or smooth on request.
+        importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS);
+        flags |= aiProcess_RemoveComponent;
+    }
+    // Read without post-processing, the face indices checked, then processed: the steps index
+    // vertices by the file's face indices unchecked (assimp's ValidateDataStructure would also
+    // refuse an empty solid or a point cloud, which are not errors here).
+    const aiScene* scene =
+        importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, ext.c_str() + 1);
+    if (scene != nullptr) {
+        if (!check_face_indices(*scene, path)) {
+            throw InputError(where, "mesh file '" + path +
+                                        "' contains no (non-degenerate) triangles (only points "
+                                        "or lines)");
+        }
+        scene = importer.ApplyPostProcessing(flags);
+    }
+    if (scene == nullptr) {
+        const std::string message = one_line(importer.GetErrorString());
+        throw InputError(
+            place_with_line(path, message),
+            "malformed " + format + ": " + (message.empty() ? "cannot parse" : message));
+    }
+    bool any_normals = false, any_colors = false;
+    for (unsigned int m = 0; m < scene->mNumMeshes; ++m) {
+        any_normals |= scene->mMeshes[m]->HasNormals();
+        any_colors |= scene->mMeshes[m]->HasVertexColors(0);
+    }
+    const uint32_t material = default_material_index(materials);
+    TriangleMesh mesh;
+    mesh.name = file_name(path);
+    for (unsigned int m = 0; m < scene->mNumMeshes; ++m) {
+        const aiMesh& in = *scene->mMeshes[m];
+        const auto offset = static_cast<uint32_t>(mesh.positions.size());
+        for (unsigned int v = 0; v < in.mNumVertices; ++v) {
+            const Vec3 p(in.mVertices[v].x, in.mVertices[v].y, in.mVertices[v].z);
+            if (!within_scene_magnitude(max_abs_component(p))) {
+                throw InputError(path, "vertex " + std::to_string(offset + v) +
+                                           ": coordinates must be " + kSceneMagnitudeRule);
+            }
+            mesh.positions.push_back(p);
+            if (any_normals) {
+                Vec3 n(0.0f);  // zero: no normal here, shade with the geometric normal
+                if (in.HasNormals()) {
+                    n = Vec3(in.mNormals[v].x, in.mNormals[v].y, in.mNormals[v].z);
+                    const float length = glm::length(n);
+                    n = (std::isfinite(length) && length > 0.0f) ? n / length : Vec3(0.0f);
+                }
+                mesh.normals.push_back(n);
+            }
+            if (any_colors) {
+                Vec3 c(1.0f);  // white: this part of the file has no colours
+                if (in.HasVertexColors(0)) {
+                    const aiColor4D& a = in.mColors[0][v];
+                    c = Vec3(a.r, a.g, a.b);
+                    if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) ||
+                        c.x < 0.0f || c.y < 0.0f || c.z < 0.0f) {
+                        throw InputError(path, "vertex " + std::to_string(offset + v) +
+                                                   " colour must be finite and >= 0");
+                    }
+                }
+                mesh.colors.push_back(c);
+            }
+        }
+        for (unsigned int f = 0; f < in.mNumFaces; ++f) {
+            const aiFace& face = in.mFaces[f];
+            if (face.mNumIndices != 3) continue;  // points and lines: not surfaces
+            std::array<uint32_t, 3> t{};
+            for (unsigned int k = 0; k < 3; ++k) {
+                t[k] = offset + face.mIndices[k];
+            }
+            mesh.triangles.push_back(t);
+            mesh.materials.push_back(material);
+        }
+    }
+    const size_t dropped = drop_degenerate_triangles(mesh);
+    if (stats) {
+        stats->degenerate_triangles = dropped;
+        stats->file_materials = 0;
+    }
+    check_mesh_not_empty(mesh, path, where);
+    return mesh;
+}
+
+}  // namespace rayo
