@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 
+#include "apps/scene/gltf_nodes.h"
 #include "apps/scene/input_file.h"
 #include "core/error.h"
 #include "core/path_util.h"
@@ -653,6 +654,49 @@ struct GltfBuilder {
     TriangleMesh mesh;
     bool any_normals = false;
     bool any_colors = false;
+    GltfNodes* nodes = nullptr;  // cameras and lights, and meshes kept for instancing
+    std::vector<std::pair<int, glm::dmat4>> mesh_placements;  // (mesh, world), with instancing
+
+    void append_mesh(int mesh_index, const glm::dmat4& world) {
+        const tinygltf::Mesh& gltf_mesh = model.meshes[static_cast<size_t>(mesh_index)];
+        for (size_t p = 0; p < gltf_mesh.primitives.size(); ++p) {
+            append_primitive(
+                gltf_mesh.primitives[p], world,
+                "mesh " + std::to_string(mesh_index) + " primitive " + std::to_string(p));
+        }
+    }
+
+    // With instancing: meshes placed once are flattened as without; a mesh placed more than
+    // once is built once in its own space, and each placement becomes a GltfNodes::Placement.
+    void place_meshes() {
+        std::map<int, size_t> uses;
+        for (const auto& [m, world] : mesh_placements) ++uses[m];
+        std::map<int, uint32_t> shared;  // glTF mesh -> index in nodes->shared_meshes
+        for (const auto& [m, world] : mesh_placements) {
+            if (uses[m] == 1) {
+                append_mesh(m, world);
+                continue;
+            }
+            auto it = shared.find(m);
+            if (it == shared.end()) {
+                TriangleMesh flat = std::move(mesh);
+                const bool flat_normals = any_normals, flat_colors = any_colors;
+                mesh = TriangleMesh();
+                any_normals = any_colors = false;
+                append_mesh(m, glm::dmat4(1.0));
+                mesh.name = model.meshes[static_cast<size_t>(m)].name.empty()
+                                ? "mesh " + std::to_string(m)
+                                : model.meshes[static_cast<size_t>(m)].name;
+                drop_degenerate_triangles(mesh);
+                it = shared.emplace(m, static_cast<uint32_t>(nodes->shared_meshes.size())).first;
+                nodes->shared_meshes.push_back(std::move(mesh));
+                mesh = std::move(flat);
+                any_normals = flat_normals;
+                any_colors = flat_colors;
+            }
+            nodes->placements.push_back({it->second, glm::mat4(world)});
+        }
+    }
 
     void append_primitive(const tinygltf::Primitive& primitive, const glm::dmat4& world,
                           const std::string& what) {
@@ -761,16 +805,16 @@ struct GltfBuilder {
         }
         const tinygltf::Node& node = model.nodes[static_cast<size_t>(node_index)];
         const glm::dmat4 world = parent * node_local_transform(node);
+        if (nodes) collect_gltf_node_items(model, node, node_index, world, path, *nodes);
         if (node.mesh >= 0) {
             if (static_cast<size_t>(node.mesh) >= model.meshes.size()) {
                 throw InputError(path, "node " + std::to_string(node_index) + ": mesh " +
                                            std::to_string(node.mesh) + " does not exist");
             }
-            const tinygltf::Mesh& gltf_mesh = model.meshes[static_cast<size_t>(node.mesh)];
-            for (size_t p = 0; p < gltf_mesh.primitives.size(); ++p) {
-                append_primitive(
-                    gltf_mesh.primitives[p], world,
-                    "mesh " + std::to_string(node.mesh) + " primitive " + std::to_string(p));
+            if (nodes && nodes->instance_shared_meshes) {
+                mesh_placements.emplace_back(node.mesh, world);
+            } else {
+                append_mesh(node.mesh, world);
             }
         }
         for (int child : node.children) visit(child, world, on_path);
@@ -853,7 +897,8 @@ void refuse_required_extensions(const std::string& json_text, const std::string&
 }  // namespace
 
 TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials,
-                       const std::string& where, MeshImportStats* stats, const FileAccess& access) {
+                       const std::string& where, MeshImportStats* stats, const FileAccess& access,
+                       GltfNodes* nodes) {
     const std::string bytes = read_input_file(path, where, "mesh file", kMaxMeshFileBytes, access);
     GltfFiles files{path, access, {}};
     tinygltf::TinyGLTF loader;
@@ -885,6 +930,7 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
     GltfBuilder builder(model, path, materials);
     materials.insert(materials.end(), converted.begin(), converted.end());
     builder.mesh.name = file_name(path);
+    builder.nodes = nodes;
 
     std::vector<int> roots;
     if (!model.scenes.empty()) {
@@ -909,6 +955,7 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
     }
     std::set<int> on_path;
     for (int root : roots) builder.visit(root, glm::dmat4(1.0), on_path);
+    builder.place_meshes();
 
     TriangleMesh mesh = std::move(builder.mesh);
     const size_t dropped = drop_degenerate_triangles(mesh);
@@ -916,7 +963,7 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
         stats->degenerate_triangles = dropped;
         stats->file_materials = converted.size();
     }
-    check_mesh_not_empty(mesh, path, where);
+    if (!nodes || nodes->shared_meshes.empty()) check_mesh_not_empty(mesh, path, where);
     return mesh;
 }
 

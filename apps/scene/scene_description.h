@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/scene/gltf_nodes.h"
 #include "core/adaptive_aa.h"
 #include "core/scene.h"
 #include "core/shape_method.h"
@@ -49,6 +50,10 @@ struct SceneDescription {
     size_t skipped_triangles = 0;
     // The "method" of top-level objects that name one (objects without stay analytic).
     std::vector<ShapeMethodRequest> shape_methods;
+    // Model files (apps/scene/model_scene.h): the cameras the file defines (scene.camera is the
+    // one in use) and the names of shading.lights where the file names them (else empty).
+    std::vector<GltfCamera> file_cameras;
+    std::vector<std::string> light_names;
 };
 
 }  // namespace rayo
