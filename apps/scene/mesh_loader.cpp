@@ -90,6 +90,9 @@ Material material_from_mtl(const tinyobj::material_t& m, const std::string& wher
     if (dissolve < 1.0f) out.transmit = Vec3(1.0f - dissolve);
     if (!std::isfinite(m.ior)) throw InputError(where, what + "Ni must be finite");
     out.ior = m.ior > 0.0f ? static_cast<float>(m.ior) : 1.0f;  // Ni <= 0: unset
+    // Ke: the radiance the surface emits (a light-emitting surface, docs/models.md).
+    out.emission = Vec3(m.emission[0], m.emission[1], m.emission[2]);
+    require_colour(out.emission, where, what + "Ke");
     return out;
 }
 

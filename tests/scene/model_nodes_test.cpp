@@ -176,8 +176,12 @@ TEST(ModelNodes, CameraOfANodeFramesTheQuadAsItsTransformSays) {
             const Vec3 p = ray.origin + t * ray.direction;
             const bool on_quad = t > 0.0f && std::abs(p.y) < 0.5f && std::abs(p.z) < 0.5f;
             EXPECT_EQ(on_quad, x >= 8 && x < 24 && y >= 8 && y < 24) << x << "," << y;
-            if (x == 16 && y == 0) EXPECT_GT(p.y, 0.0f);  // row 0 is the top (+y)
-            if (x == 0 && y == 16) EXPECT_GT(p.z, 0.0f);  // column 0 is the left (+z from +x)
+            if (x == 16 && y == 0) {
+                EXPECT_GT(p.y, 0.0f);  // row 0 is the top (+y)
+            }
+            if (x == 0 && y == 16) {
+                EXPECT_GT(p.z, 0.0f);  // column 0 is the left (+z, seen from +x)
+            }
         }
     }
     // The other aspect: the output's width follows aspectRatio, yfov stays.
@@ -229,6 +233,9 @@ TEST(ModelNodes, CameraChosenByNameOrIndexAndAnUnknownOneListsThem) {
 // Renders `d` at 32 × 32 (the camera's aspect) with one thread.
 Film render_small(SceneDescription d) {
     d.scene.camera.width = d.scene.camera.height = 32;
+    // The lights' diffuse part alone: no ambient term, no highlight (glTF's dielectric F0 0.04).
+    d.shading.ambient_light = Vec3(0.0f);
+    for (Material& m : d.shading.materials) m.ks = Vec3(0.0f);
     return render_scene(d, 1, false).film;
 }
 
@@ -313,6 +320,7 @@ TEST(ModelNodes, CornellBoxIsLitByItsOwnEmitterWithShadows) {
         probe.scene.camera.up = Vec3(0.0f, 0.0f, 1.0f);
         probe.scene.camera.vfov_degrees = 1.0f;
         probe.scene.camera.width = probe.scene.camera.height = 1;
+        probe.shading.ambient_light = Vec3(0.0f);
         return render_scene(probe, 1, false).film.rgb(0, 0);
     };
     const Vec3 open = floor_radiance(Vec3(278.0f, 0.0f, 280.0f));  // under the light
