@@ -659,6 +659,7 @@ struct GltfBuilder {
     bool any_colors = false;
     GltfNodes* nodes = nullptr;  // cameras and lights, and meshes kept for instancing
     std::vector<std::pair<int, glm::dmat4>> mesh_placements;  // (mesh, world), with instancing
+    size_t shared_degenerate = 0;  // zero-area triangles dropped from shared meshes (once each)
 
     void append_mesh(int mesh_index, const glm::dmat4& world) {
         const tinygltf::Mesh& gltf_mesh = model.meshes[static_cast<size_t>(mesh_index)];
@@ -690,7 +691,7 @@ struct GltfBuilder {
                 mesh.name = model.meshes[static_cast<size_t>(m)].name.empty()
                                 ? "mesh " + std::to_string(m)
                                 : model.meshes[static_cast<size_t>(m)].name;
-                drop_degenerate_triangles(mesh);
+                shared_degenerate += drop_degenerate_triangles(mesh);
                 it = shared.emplace(m, static_cast<uint32_t>(nodes->shared_meshes.size())).first;
                 nodes->shared_meshes.push_back(std::move(mesh));
                 mesh = std::move(flat);
@@ -963,7 +964,7 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
     TriangleMesh mesh = std::move(builder.mesh);
     const size_t dropped = drop_degenerate_triangles(mesh);
     if (stats) {
-        stats->degenerate_triangles = dropped;
+        stats->degenerate_triangles = dropped + builder.shared_degenerate;
         stats->file_materials = converted.size();
     }
     if (!nodes || nodes->shared_meshes.empty()) check_mesh_not_empty(mesh, path, where);
