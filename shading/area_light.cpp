@@ -1,5 +1,6 @@
 #include "shading/area_light.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/sampling.h"
@@ -34,10 +35,50 @@ bool flat_sample(const Vec3& point, const Vec3& target, const Vec3& normal, floa
     return true;
 }
 
+// Rec. 709 luminance, the weight of a radiance in the power CDF.
+float luminance(const Vec3& c) {
+    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
+
 }  // namespace
+
+void MeshEmitter::add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& radiance) {
+    const Triangle t{a, b - a, c - a, radiance};
+    const float area = 0.5f * glm::length(glm::cross(t.e1, t.e2));
+    const float weight = area * luminance(radiance);
+    if (!(area > 0.0f) || !(weight > 0.0f) || !std::isfinite(weight)) return;
+    m_triangles.push_back(t);
+    m_cdf.push_back((m_cdf.empty() ? 0.0f : m_cdf.back()) + weight);
+    m_area += area;
+}
+
+bool MeshEmitter::sample(const Vec3& point, const glm::vec2& u, LightSample& out) const {
+    if (m_triangles.empty()) return false;
+    // Triangle i with probability wᵢ/W: the first running sum above u.x·W.
+    const float total = m_cdf.back();
+    const float target = u.x * total;
+    const size_t i = std::min<size_t>(
+        static_cast<size_t>(std::upper_bound(m_cdf.begin(), m_cdf.end(), target) - m_cdf.begin()),
+        m_cdf.size() - 1);
+    const float low = i == 0 ? 0.0f : m_cdf[i - 1];
+    const float weight = m_cdf[i] - low;
+    const float v = std::clamp((target - low) / weight, 0.0f, 0.99999994f);
+    // A uniform point of the triangle (Shirley's square-to-triangle map: √v, then u.y along the
+    // far edge), area pdf 1/Aᵢ; with the pick, the area pdf is wᵢ/(W·Aᵢ) = 1/A_eff.
+    const Triangle& t = m_triangles[i];
+    const float s = std::sqrt(v);
+    const Vec3 target_point = t.p0 + s * (1.0f - u.y) * t.e1 + s * u.y * t.e2;
+    const Vec3 cross = glm::cross(t.e1, t.e2);
+    const float cross_length = glm::length(cross);
+    const float triangle_area = 0.5f * cross_length;
+    const float effective_area = triangle_area * total / weight;
+    return flat_sample(point, target_point, cross / cross_length, effective_area, t.radiance, out);
+}
 
 float AreaLight::area() const {
     switch (shape) {
+        case Shape::Mesh:
+            return mesh ? mesh->area() : 0.0f;
         case Shape::Rectangle:
             return glm::length(glm::cross(edge1, edge2));
         case Shape::Disk:
@@ -50,6 +91,8 @@ float AreaLight::area() const {
 
 bool AreaLight::sample(const Vec3& point, const glm::vec2& u, LightSample& out) const {
     switch (shape) {
+        case Shape::Mesh:
+            return mesh && mesh->sample(point, u, out);
         case Shape::Rectangle:
             return flat_sample(point, corner + u.x * edge1 + u.y * edge2,
                                glm::normalize(glm::cross(edge1, edge2)), area(), radiance(), out);

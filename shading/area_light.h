@@ -3,12 +3,42 @@
 // emits a uniform radiance L = color·intensity from its surface, sampled at `samples` stratified
 // points per shading point. The scene loader also puts the surface in the scene as an emissive
 // object (apps/scene/area_light_emitters.h) so that camera and reflection rays see it.
+#include <memory>
+#include <vector>
+
 #include "shading/light_sample.h"
 
 namespace rayo {
 
+// The emissive triangles of a model (apps/scene/area_light_emitters.h): one light however many
+// triangles emit. A sample picks a triangle with probability proportional to its power
+// (area × luminance of its radiance: by area when all emit alike), then a uniform point on it,
+// so the cost per shading point is the light's `samples` whatever the triangle count; memory is
+// one Triangle and one float per emissive triangle.
+class MeshEmitter {
+  public:
+    struct Triangle {
+        Vec3 p0{0.0f}, e1{0.0f}, e2{0.0f};  // p0 + s·e1 + t·e2; emits toward e1 × e2
+        Vec3 radiance{0.0f};
+    };
+    // Ignores triangles of zero area or zero radiance.
+    void add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& radiance);
+    bool empty() const { return m_triangles.empty(); }
+    size_t size() const { return m_triangles.size(); }
+    float area() const { return m_area; }
+    const std::vector<Triangle>& triangles() const { return m_triangles; }
+    // As AreaLight::sample: uniform u ∈ [0,1)² picks the triangle (u.x, by the power CDF,
+    // then rescaled to [0,1) inside the triangle's interval) and the point on it.
+    bool sample(const Vec3& point, const glm::vec2& u, LightSample& out) const;
+
+  private:
+    std::vector<Triangle> m_triangles;
+    std::vector<float> m_cdf;  // running sum of the weights, m_cdf.back() = total
+    float m_area = 0.0f;
+};
+
 struct AreaLight {
-    enum class Shape { Rectangle, Disk, Sphere };
+    enum class Shape { Rectangle, Disk, Sphere, Mesh };
     Shape shape = Shape::Disk;
     Vec3 color{1.0f};
     float intensity = 1.0f;  // L = color·intensity, the radiance of the emitting surface
@@ -19,8 +49,11 @@ struct AreaLight {
     Vec3 center{0.0f};
     Vec3 normal{0.0f, -1.0f, 0.0f};
     float radius = 1.0f;
+    // Mesh: emissive triangles already in the scene, each with its own radiance (color and
+    // intensity unused).
+    std::shared_ptr<const MeshEmitter> mesh;
 
-    Vec3 radiance() const { return color * intensity; }
+    Vec3 radiance() const { return color * intensity; }  // not for meshes: per triangle
     float area() const;
     int sample_count() const { return samples; }
     // A point of the light for u ∈ [0,1)² (rectangle and disk: uniform over the area; sphere:

@@ -13,10 +13,11 @@
 #include "shading/area_light.h"
 #include "shading/directional_light.h"
 #include "shading/point_light.h"
+#include "shading/spot_light.h"
 
 namespace rayo {
 
-using Light = std::variant<PointLight, DirectionalLight, AreaLight>;
+using Light = std::variant<PointLight, DirectionalLight, AreaLight, SpotLight>;
 
 inline bool sample_light(const Light& light, const Vec3& point, const glm::vec2& u,
                          LightSample& out) {

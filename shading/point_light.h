@@ -1,6 +1,7 @@
 #pragma once
 // A point light with colour, intensity and distance attenuation (seed 000: f(d) = 1/(d + d0) or
-// 1/(a0 + a1·d + a2·d²); seed 003 eq. 2.2 clamps to 1).
+// 1/(a0 + a1·d + a2·d²); seed 003 eq. 2.2 clamps to 1; the inverse square of glTF's
+// KHR_lights_punctual, optionally windowed to a range).
 #include <algorithm>
 
 #include "shading/light_sample.h"
@@ -8,10 +9,13 @@
 namespace rayo {
 
 struct Attenuation {
-    enum class Kind { None, Linear, Quadratic };
+    enum class Kind { None, Linear, Quadratic, InverseSquare };
     Kind kind = Kind::None;
     float d0 = 0.0f;                        // Linear: 1/(d + d0)
     float a0 = 1.0f, a1 = 0.0f, a2 = 0.0f;  // Quadratic: min(1, 1/(a0 + a1·d + a2·d²))
+    // InverseSquare: 1/d², times KHR_lights_punctual's recommended window
+    // clamp(1 − (d/range)⁴, 0, 1)² when range > 0 (no window when range = 0).
+    float range = 0.0f;
 
     float factor(float distance) const {
         switch (kind) {
@@ -19,6 +23,15 @@ struct Attenuation {
                 return 1.0f / (distance + d0);
             case Kind::Quadratic:
                 return std::min(1.0f, 1.0f / (a0 + a1 * distance + a2 * distance * distance));
+            case Kind::InverseSquare: {
+                float window = 1.0f;
+                if (range > 0.0f) {
+                    const float r = distance / range, r2 = r * r;
+                    window = std::clamp(1.0f - r2 * r2, 0.0f, 1.0f);
+                    window *= window;
+                }
+                return window / (distance * distance);
+            }
             case Kind::None:
                 break;
         }

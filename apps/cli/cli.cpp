@@ -107,6 +107,13 @@ render options:
   --view-dir X,Y,Z         model files: the direction from the model's centre to the eye
                            [0.6,0.45,1: front, right, above; +y is up]
   --no-ground              model files: no ground square under the model
+  --camera NAME|INDEX      glTF files: the camera to use, by name or by its index in `rayo
+                           info`'s list, or auto (the automatic framing) [the file's first
+                           camera, else auto; --view-dir alone chooses auto]
+  --auto-lights            model files: add the automatic key and fill lights even when the
+                           file has lights (KHR_lights_punctual) or emissive surfaces
+  --no-instances           glTF files: flatten meshes that several nodes use instead of
+                           keeping them once as instances
   --restrict-paths         files the scene references (meshes, material libraries, glTF
                            buffers) must lie in the scene's folder tree (untrusted scenes)
   --tile-size N            tile side in pixels, a multiple of 16 [64]
@@ -406,6 +413,12 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             r.load_options.model.view_direction = parse_direction(a, cursor.value());
         } else if (a == "--no-ground") {
             r.load_options.model.ground = false;
+        } else if (a == "--camera") {
+            r.load_options.model.camera = cursor.value();
+        } else if (a == "--auto-lights") {
+            r.load_options.model.auto_lights = true;
+        } else if (a == "--no-instances") {
+            r.load_options.model.instances = false;
         } else if (a == "--flat-spheres") {
             r.flat_spheres = true;
         } else if (a == "--single-rays") {
@@ -563,6 +576,9 @@ RenderFingerprint render_fingerprint(const RenderArgs& args, const SceneDescript
         framing << "default view";
     }
     framing << (model.ground ? ", ground" : ", no ground");
+    if (model.camera) framing << ", camera " << *model.camera;
+    if (model.auto_lights) framing << ", auto lights";
+    if (!model.instances) framing << ", no instances";
     return {
         {"rayo version", RAYO_VERSION},
         {"scene contents", contents},
@@ -704,10 +720,13 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
             err << "rayo: warning: --nff-light-intensity applies to NFF scenes only; ignored\n";
         }
         const ModelFraming default_framing;
-        if ((args.load_options.model.view_direction ||
-             args.load_options.model.ground != default_framing.ground) &&
+        const ModelFraming& model = args.load_options.model;
+        if ((model.view_direction || model.ground != default_framing.ground || model.camera ||
+             model.auto_lights != default_framing.auto_lights ||
+             model.instances != default_framing.instances) &&
             (!args.scene_path || !is_model_file(*args.scene_path))) {
-            err << "rayo: warning: --view-dir and --no-ground apply to model files only; ignored\n";
+            err << "rayo: warning: --view-dir, --no-ground, --camera, --auto-lights and "
+                   "--no-instances apply to model files only; ignored\n";
         }
     }
     apply_overrides(args, d);
@@ -1080,6 +1099,39 @@ std::optional<Bounds3> direct_bounds(const Scene& scene) {
     return box;
 }
 
+// One line of `rayo info` about a light: its type, place or direction and intensity.
+std::string describe_light(const Light& light) {
+    std::ostringstream out;
+    auto vec = [&](const Vec3& v) { out << v.x << " " << v.y << " " << v.z; };
+    if (const auto* l = std::get_if<PointLight>(&light)) {
+        out << "point position ";
+        vec(l->position);
+        out << " color ";
+        vec(l->color);
+        out << " intensity " << l->intensity;
+    } else if (const auto* l = std::get_if<SpotLight>(&light)) {
+        out << "spot position ";
+        vec(l->position);
+        out << " direction ";
+        vec(l->direction);
+        out << " cone " << glm::degrees(std::acos(l->cos_inner)) << "-"
+            << glm::degrees(std::acos(l->cos_outer)) << " degrees color ";
+        vec(l->color);
+        out << " intensity " << l->intensity;
+    } else if (const auto* l = std::get_if<DirectionalLight>(&light)) {
+        out << "directional direction ";
+        vec(l->direction);
+        out << " color ";
+        vec(l->color);
+        out << " intensity " << l->intensity;
+    } else if (const auto* l = std::get_if<AreaLight>(&light)) {
+        out << "area";
+        if (l->mesh) out << " triangles " << l->mesh->size();
+        out << " area " << l->area() << " samples " << l->samples;
+    }
+    return out.str();
+}
+
 int run_info(const std::vector<std::string>& args, std::ostream& out) {
     if (args.size() != 1) throw UsageError("info: expected exactly one scene file");
     // A model file is described as it is: without the ground square that framing adds.
@@ -1108,6 +1160,27 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
         out << "groups " << d.scene.groups.size() << "\n"
             << "instances " << d.scene.instances.size() << "\n"
             << "instanced_objects " << d.scene.instanced_object_count() << "\n";
+    }
+    // Model files: the cameras the file defines and the lights with their names.
+    for (size_t i = 0; i < d.file_cameras.size(); ++i) {
+        const GltfCamera& c = d.file_cameras[i];
+        out << "camera " << i << " '" << c.name << "' "
+            << (c.orthographic ? "orthographic" : "perspective") << " position " << c.position.x
+            << " " << c.position.y << " " << c.position.z << " direction " << c.forward.x << " "
+            << c.forward.y << " " << c.forward.z;
+        if (c.orthographic) {
+            out << " xmag " << c.xmag << " ymag " << c.ymag << "\n";
+        } else {
+            out << " yfov " << glm::degrees(c.yfov_radians) << " degrees";
+            if (c.aspect_ratio > 0.0f) out << " aspect " << c.aspect_ratio;
+            out << "\n";
+        }
+    }
+    if (!d.light_names.empty()) {
+        for (size_t i = 0; i < d.shading.lights.size(); ++i) {
+            out << "light " << i << " '" << (i < d.light_names.size() ? d.light_names[i] : "")
+                << "' " << describe_light(d.shading.lights[i]) << "\n";
+        }
     }
     for (const std::string& w : d.warnings) out << "warning: " << w << "\n";
     return 0;

@@ -1,5 +1,6 @@
 #include "apps/scene/area_light_emitters.h"
 
+#include <memory>
 #include <string>
 #include <variant>
 
@@ -8,7 +9,7 @@ namespace rayo {
 void add_area_light_emitters(SceneDescription& d) {
     for (size_t i = 0; i < d.shading.lights.size(); ++i) {
         const auto* light = std::get_if<AreaLight>(&d.shading.lights[i]);
-        if (!light) continue;
+        if (!light || light->shape == AreaLight::Shape::Mesh) continue;
         Material m;
         m.name = "light " + std::to_string(i);
         m.ka = m.kd = m.ks = Vec3(0.0f);
@@ -23,6 +24,8 @@ void add_area_light_emitters(SceneDescription& d) {
             case AreaLight::Shape::Sphere:
                 d.scene.shapes.of<Sphere>().push_back({light->center, light->radius, id});
                 break;
+            case AreaLight::Shape::Mesh:  // its triangles are in the scene already
+                break;
             case AreaLight::Shape::Rectangle: {
                 // Counter-clockwise seen from the emitting side: the winding normal is
                 // edge1 × edge2.
@@ -35,6 +38,38 @@ void add_area_light_emitters(SceneDescription& d) {
             }
         }
     }
+}
+
+size_t add_mesh_emitter_light(SceneDescription& d, int samples) {
+    const std::vector<Material>& materials = d.shading.materials;
+    auto emitter = std::make_shared<MeshEmitter>();
+    auto add_mesh = [&](const TriangleMesh& mesh, const glm::mat4* transform,
+                        uint32_t material_override) {
+        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+            const uint32_t id =
+                material_override != kNoMaterialOverride ? material_override : mesh.materials[t];
+            if (id >= materials.size() || !materials[id].emissive()) continue;
+            Vec3 p[3];
+            for (int k = 0; k < 3; ++k) {
+                p[k] = mesh.positions[mesh.triangles[t][k]];
+                if (transform) p[k] = Vec3(*transform * glm::vec4(p[k], 1.0f));
+            }
+            emitter->add(p[0], p[1], p[2], materials[id].emission);
+        }
+    };
+    for (const TriangleMesh& mesh : d.scene.meshes) add_mesh(mesh, nullptr, kNoMaterialOverride);
+    for (const Instance& instance : d.scene.instances) {
+        for (const TriangleMesh& mesh : d.scene.groups[instance.group].meshes) {
+            add_mesh(mesh, &instance.transform, instance.material);
+        }
+    }
+    if (emitter->empty()) return 0;
+    AreaLight light;
+    light.shape = AreaLight::Shape::Mesh;
+    light.samples = samples;
+    light.mesh = emitter;
+    d.shading.lights.push_back(light);
+    return emitter->size();
 }
 
 }  // namespace rayo

@@ -11,4 +11,11 @@ namespace rayo {
 // shadow rays stop short of its surface (WhittedIntegrator::light_sample).
 void add_area_light_emitters(SceneDescription& d);
 
+// The other way round: triangles of the scene whose material emits (MTL Ke, glTF
+// emissiveFactor), placed directly or through instances, become one AreaLight of shape Mesh
+// (shading/area_light.h: sampled by power, `samples` points per shading point), so that they
+// light the scene with shadows besides being seen. Returns the emissive triangle count (0: no
+// light added).
+size_t add_mesh_emitter_light(SceneDescription& d, int samples = 16);
+
 }  // namespace rayo

@@ -26,6 +26,7 @@
 
 #include "apps/scene/assimp_loader.h"
 #include "apps/scene/gltf_draco.h"
+#include "apps/scene/gltf_nodes.h"
 #include "apps/scene/input_file.h"
 #include "core/error.h"
 #include "core/math.h"
@@ -101,6 +102,9 @@ Material material_from_mtl(const tinyobj::material_t& m, const std::string& wher
     if (dissolve < 1.0f) out.transmit = Vec3(1.0f - dissolve);
     if (!std::isfinite(m.ior)) throw InputError(where, what + "Ni must be finite");
     out.ior = m.ior > 0.0f ? static_cast<float>(m.ior) : 1.0f;  // Ni <= 0: unset
+    // Ke: the radiance the surface emits (a light-emitting surface, docs/models.md).
+    out.emission = Vec3(m.emission[0], m.emission[1], m.emission[2]);
+    require_colour(out.emission, where, what + "Ke");
     return out;
 }
 
@@ -657,6 +661,50 @@ struct GltfBuilder {
     TriangleMesh mesh;
     bool any_normals = false;
     bool any_colors = false;
+    GltfNodes* nodes = nullptr;  // cameras and lights, and meshes kept for instancing
+    std::vector<std::pair<int, glm::dmat4>> mesh_placements;  // (mesh, world), with instancing
+    size_t shared_degenerate = 0;  // zero-area triangles dropped from shared meshes (once each)
+
+    void append_mesh(int mesh_index, const glm::dmat4& world) {
+        const tinygltf::Mesh& gltf_mesh = model.meshes[static_cast<size_t>(mesh_index)];
+        for (size_t p = 0; p < gltf_mesh.primitives.size(); ++p) {
+            append_primitive(
+                gltf_mesh.primitives[p], world,
+                "mesh " + std::to_string(mesh_index) + " primitive " + std::to_string(p));
+        }
+    }
+
+    // With instancing: meshes placed once are flattened as without; a mesh placed more than
+    // once is built once in its own space, and each placement becomes a GltfNodes::Placement.
+    void place_meshes() {
+        std::map<int, size_t> uses;
+        for (const auto& [m, world] : mesh_placements) ++uses[m];
+        std::map<int, uint32_t> shared;  // glTF mesh -> index in nodes->shared_meshes
+        for (const auto& [m, world] : mesh_placements) {
+            if (uses[m] == 1) {
+                append_mesh(m, world);
+                continue;
+            }
+            auto it = shared.find(m);
+            if (it == shared.end()) {
+                TriangleMesh flat = std::move(mesh);
+                const bool flat_normals = any_normals, flat_colors = any_colors;
+                mesh = TriangleMesh();
+                any_normals = any_colors = false;
+                append_mesh(m, glm::dmat4(1.0));
+                mesh.name = model.meshes[static_cast<size_t>(m)].name.empty()
+                                ? "mesh " + std::to_string(m)
+                                : model.meshes[static_cast<size_t>(m)].name;
+                shared_degenerate += drop_degenerate_triangles(mesh);
+                it = shared.emplace(m, static_cast<uint32_t>(nodes->shared_meshes.size())).first;
+                nodes->shared_meshes.push_back(std::move(mesh));
+                mesh = std::move(flat);
+                any_normals = flat_normals;
+                any_colors = flat_colors;
+            }
+            nodes->placements.push_back({it->second, glm::mat4(world)});
+        }
+    }
 
     void append_primitive(const tinygltf::Primitive& primitive, const glm::dmat4& world,
                           const std::string& what) {
@@ -765,16 +813,16 @@ struct GltfBuilder {
         }
         const tinygltf::Node& node = model.nodes[static_cast<size_t>(node_index)];
         const glm::dmat4 world = parent * node_local_transform(node);
+        if (nodes) collect_gltf_node_items(model, node, node_index, world, path, *nodes);
         if (node.mesh >= 0) {
             if (static_cast<size_t>(node.mesh) >= model.meshes.size()) {
                 throw InputError(path, "node " + std::to_string(node_index) + ": mesh " +
                                            std::to_string(node.mesh) + " does not exist");
             }
-            const tinygltf::Mesh& gltf_mesh = model.meshes[static_cast<size_t>(node.mesh)];
-            for (size_t p = 0; p < gltf_mesh.primitives.size(); ++p) {
-                append_primitive(
-                    gltf_mesh.primitives[p], world,
-                    "mesh " + std::to_string(node.mesh) + " primitive " + std::to_string(p));
+            if (nodes && nodes->instance_shared_meshes) {
+                mesh_placements.emplace_back(node.mesh, world);
+            } else {
+                append_mesh(node.mesh, world);
             }
         }
         for (int child : node.children) visit(child, world, on_path);
@@ -881,7 +929,8 @@ void refuse_required_extensions(const nlohmann::json& root, const std::string& p
 }  // namespace
 
 TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials,
-                       const std::string& where, MeshImportStats* stats, const FileAccess& access) {
+                       const std::string& where, MeshImportStats* stats, const FileAccess& access,
+                       GltfNodes* nodes) {
     const std::string bytes = read_input_file(path, where, "mesh file", kMaxMeshFileBytes, access);
     GltfFiles files{path, access, {}};
     tinygltf::TinyGLTF loader;
@@ -924,6 +973,7 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
     GltfBuilder builder(model, path, materials);
     materials.insert(materials.end(), converted.begin(), converted.end());
     builder.mesh.name = file_name(path);
+    builder.nodes = nodes;
 
     std::vector<int> roots;
     if (!model.scenes.empty()) {
@@ -948,14 +998,15 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
     }
     std::set<int> on_path;
     for (int root : roots) builder.visit(root, glm::dmat4(1.0), on_path);
+    builder.place_meshes();
 
     TriangleMesh mesh = std::move(builder.mesh);
     const size_t dropped = drop_degenerate_triangles(mesh);
     if (stats) {
-        stats->degenerate_triangles = dropped;
+        stats->degenerate_triangles = dropped + builder.shared_degenerate;
         stats->file_materials = converted.size();
     }
-    check_mesh_not_empty(mesh, path, where);
+    if (!nodes || nodes->shared_meshes.empty()) check_mesh_not_empty(mesh, path, where);
     return mesh;
 }
 
@@ -976,7 +1027,8 @@ ImportedMesh import_mesh_file(const std::string& path, std::vector<Material>& ma
     if (ext == ".obj") {
         out.mesh = load_obj(path, materials, where, &out.stats, options.access);
     } else if (ext == ".gltf" || ext == ".glb") {
-        out.mesh = load_gltf(path, materials, where, &out.stats, options.access);
+        out.mesh =
+            load_gltf(path, materials, where, &out.stats, options.access, options.gltf_nodes);
     } else if (is_assimp_mesh_file(path)) {
         out.mesh = load_assimp_mesh(path, materials, where, &out.stats, options.access);
     } else {
@@ -996,7 +1048,8 @@ ImportedMesh import_mesh_file(const std::string& path, std::vector<Material>& ma
         }
     }
     out.stats.degenerate_triangles += drop_degenerate_triangles(mesh);
-    check_mesh_not_empty(mesh, path, where);
+    if (!options.gltf_nodes || options.gltf_nodes->shared_meshes.empty())
+        check_mesh_not_empty(mesh, path, where);
     if (out.stats.degenerate_triangles > 0) {  // dropped, not refused: reported by the CLI
         out.stats.warnings.push_back(
             where + ": dropped " + std::to_string(out.stats.degenerate_triangles) +

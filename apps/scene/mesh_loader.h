@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/scene/gltf_nodes.h"
 #include "apps/scene/input_file.h"
 #include "core/shapes/mesh.h"
 #include "shading/material.h"
@@ -36,10 +37,12 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
 
 // glTF 2.0: POSITION, NORMAL and indices (u8/u16/u32) of the TRIANGLES primitives of every mesh
 // instanced by the default scene's nodes (node matrices and TRS applied). .glb and .gltf (base64
-// or external buffers). Other primitive modes and sparse accessors are rejected.
+// or external buffers). Other primitive modes and sparse accessors are rejected. With `nodes`,
+// also the nodes' cameras and lights, and, when nodes->instance_shared_meshes, the meshes that
+// several nodes use kept once (apps/scene/gltf_nodes.h; the returned mesh may then be empty).
 TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials,
                        const std::string& where, MeshImportStats* stats = nullptr,
-                       const FileAccess& access = {});
+                       const FileAccess& access = {}, GltfNodes* nodes = nullptr);
 
 // The model file extensions import_mesh_file reads (lower case, with the dot), and the same as
 // words for messages (".obj, .gltf, .glb, .ply, .stl or .off").
@@ -51,6 +54,10 @@ struct MeshImportOptions {
     glm::dmat4 transform{1.0};    // applied to the file's mesh before degenerate faces are dropped
     std::string transform_where;  // named when the transformed mesh leaves the scene's magnitudes
     FileAccess access;
+    // glTF only: when given, meshes that several nodes use go here as groups and instances
+    // (and the file's cameras and lights), not into the returned mesh; the returned mesh may
+    // then be empty when every mesh is shared.
+    GltfNodes* gltf_nodes = nullptr;
 };
 
 struct ImportedMesh {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/scene/gltf_nodes.h"
 #include "core/adaptive_aa.h"
 #include "core/scene.h"
 #include "core/shape_method.h"
@@ -53,6 +54,10 @@ struct SceneDescription {
     // and height fields: `auto`), one line each for --stats: "voxels /objects/3 (auto): mesh,
     // 42216 triangles (<= 671088, ~4 MB)".
     std::vector<std::string> method_choices;
+    // Model files (apps/scene/model_scene.h): the cameras the file defines (scene.camera is the
+    // one in use) and the names of shading.lights where the file names them (else empty).
+    std::vector<GltfCamera> file_cameras;
+    std::vector<std::string> light_names;
 };
 
 }  // namespace rayo

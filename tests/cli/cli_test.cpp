@@ -234,6 +234,59 @@ TEST_F(CliTest, ModelFileRendersFramedWithNoSceneFile) {
     EXPECT_NE(warned.output.find("apply to model files only"), std::string::npos) << warned.output;
 }
 
+// A glTF quad (data-URI buffer) with two cameras and a spot light (docs/models.md).
+const char* const kCameraGltf = R"({"asset": {"version": "2.0"}, "scene": 0,
+ "scenes": [{"nodes": [0, 1, 2, 3]}],
+ "nodes": [{"mesh": 0}, {"camera": 0, "name": "front", "translation": [0, 0, 3]},
+           {"camera": 1, "translation": [0, 0, 4]},
+           {"translation": [0, 0, 2], "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+ "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "aspectRatio": 1.5, "znear": 0.1}},
+             {"name": "top", "type": "orthographic",
+              "orthographic": {"xmag": 1, "ymag": 1, "znear": 0.1, "zfar": 10}}],
+ "extensionsUsed": ["KHR_lights_punctual"],
+ "extensions": {"KHR_lights_punctual": {"lights": [{"name": "lamp", "type": "spot",
+   "intensity": 6.283185307179586, "spot": {"outerConeAngle": 0.5}}]}},
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 1}, "indices": 0}]}],
+ "buffers": [{"byteLength": 60, "uri": "data:application/octet-stream;base64,AACAvwAAgL8AAAAAAACAPwAAgL8AAAAAAACAPwAAgD8AAAAAAACAvwAAgD8AAAAAAAABAAIAAAACAAMA"}],
+ "bufferViews": [{"buffer": 0, "byteOffset": 48, "byteLength": 12},
+                 {"buffer": 0, "byteOffset": 0, "byteLength": 48}],
+ "accessors": [{"bufferView": 0, "componentType": 5123, "count": 6, "type": "SCALAR"},
+               {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3",
+                "min": [-1, -1, 0], "max": [1, 1, 0]}]})";
+
+TEST_F(CliTest, ModelCamerasAndLightsAreListedAndChosen) {
+    write("cams.gltf", kCameraGltf);
+    const CommandResult info = run("info cams.gltf");
+    EXPECT_EQ(info.exit_code, 0) << info.output;
+    EXPECT_NE(info.output.find("resolution 720x480"), std::string::npos) << info.output;
+    EXPECT_NE(info.output.find("camera 0 'front' perspective position 0 0 3 direction 0 0 -1 "
+                               "yfov 45.8366 degrees aspect 1.5"),
+              std::string::npos)
+        << info.output;
+    EXPECT_NE(info.output.find("camera 1 'top' orthographic position 0 0 4"), std::string::npos)
+        << info.output;
+    // The spot light, intensity 2π cd → 2 (I/π); no automatic key and fill.
+    EXPECT_NE(info.output.find("light 0 'lamp' spot position 0 0 2 direction 0 0 -1 cone 0-28.6479 "
+                               "degrees color 1 1 1 intensity 2\n"),
+              std::string::npos)
+        << info.output;
+    EXPECT_EQ(info.output.find("'key'"), std::string::npos) << info.output;
+
+    const CommandResult by_name = run("render cams.gltf --camera top --width 24 -o top.png");
+    EXPECT_EQ(by_name.exit_code, 0) << by_name.output;
+    EXPECT_NE(by_name.output.find("camera 'top' is orthographic"), std::string::npos)
+        << by_name.output;
+    const CommandResult by_index = run("render cams.gltf --camera 0 --width 24 -o front.png");
+    EXPECT_EQ(by_index.exit_code, 0) << by_index.output;
+    EXPECT_NE(by_index.output.find("24x16"), std::string::npos) << by_index.output;
+    const CommandResult unknown = run("render cams.gltf --camera 5 --width 24 -o x.png");
+    EXPECT_EQ(unknown.exit_code, 1);
+    EXPECT_NE(unknown.output.find("cams.gltf: --camera: no camera '5'; the file's cameras are: 0 "
+                                  "'front', 1 'top', or \"auto\""),
+              std::string::npos)
+        << unknown.output;
+}
+
 TEST_F(CliTest, UnwritableOutputLeavesNothing) {
     write("scene.nff", kSmallNff);
     CommandResult r = run("render scene.nff -o no/such/dir/x.png");

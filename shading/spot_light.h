@@ -1,0 +1,43 @@
+#pragma once
+// A spot light: a point light whose light is confined to a cone about `direction`, with the
+// smooth edge of glTF's KHR_lights_punctual: the angular factor is
+// clamp((cos θ − cos θouter)/(cos θinner − cos θouter), 0, 1)², θ the angle between the
+// direction and the way to the shaded point (full light inside θinner, none outside θouter).
+#include <algorithm>
+
+#include "shading/point_light.h"
+
+namespace rayo {
+
+struct SpotLight {
+    Vec3 position{0.0f};
+    Vec3 direction{0.0f, -1.0f, 0.0f};  // the cone's axis, the way the light shines (unit)
+    Vec3 color{1.0f};
+    float intensity = 1.0f;
+    Attenuation attenuation;
+    float cos_inner = 1.0f;                  // cos θinner (θinner = 0: no full-light core)
+    float cos_outer = 0.70710678118654752f;  // cos θouter (glTF's default θouter = π/4)
+
+    int sample_count() const { return 1; }
+    float angular_factor(const Vec3& to_point) const {
+        // glTF's scale 1/max(0.001, cos θinner − cos θouter) keeps the edge finite when the two
+        // angles meet.
+        const float scale = 1.0f / std::max(0.001f, cos_inner - cos_outer);
+        const float f = std::clamp((glm::dot(direction, to_point) - cos_outer) * scale, 0.0f, 1.0f);
+        return f * f;
+    }
+    // False at the light's own position and outside the cone.
+    bool sample(const Vec3& point, const glm::vec2& /*u*/, LightSample& out) const {
+        const Vec3 offset = position - point;
+        out.distance = glm::length(offset);
+        if (!(out.distance > 0.0f)) return false;
+        out.direction = offset / out.distance;
+        const float cone = angular_factor(-out.direction);
+        if (!(cone > 0.0f)) return false;
+        out.radiance = color * intensity * cone * attenuation.factor(out.distance);
+        out.pdf = 1.0f;
+        return true;
+    }
+};
+
+}  // namespace rayo
