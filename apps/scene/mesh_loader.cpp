@@ -963,7 +963,7 @@ struct GltfTextures {
 
     // textureInfo -> ImageMap (no image, with a warning, when it cannot be used): the sampler's
     // wrap modes and KHR_texture_transform's offset, rotation and scale,
-    // (s, t, 1) = T·R·S·(u, v, 1) as the extension's specification writes it.
+    // (s, t, 1) = T·R·S·(u, v, 1), R = (cos r, sin r; −sin r, cos r).
     ImageMap map(const tinygltf::TextureInfo& info, const std::string& material, const char* slot) {
         ImageMap out;
         if (info.index < 0) return out;
@@ -991,7 +991,9 @@ struct GltfTextures {
             tex_coord = static_cast<int>(value_number(t, "texCoord", -1, tex_coord));
             const glm::mat3 translation(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
             const float c = std::cos(rotation), s = std::sin(rotation);
-            const glm::mat3 rotate(c, s, 0, -s, c, 0, 0, 0, 1);
+            // Rows (c, s; −s, c): the direction the extension's sample model
+            // (TextureTransformTest) and three.js, its reference viewer, rotate in.
+            const glm::mat3 rotate(c, -s, 0, s, c, 0, 0, 0, 1);
             const glm::mat3 scaling(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
             transform = translation * rotate * scaling;
         }
