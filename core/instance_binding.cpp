@@ -59,6 +59,7 @@ void InstanceBinding::parameterize(SurfaceHit& hit) const {
     m_group.bindings[hit.group_geometry]->parameterize(local);
     hit.uv = local.uv;
     hit.dpdu = glm::mat3(m_to_world) * local.dpdu;  // a tangent: mapped by M's linear part
+    hit.dpdv = glm::mat3(m_to_world) * local.dpdv;
 }
 
 }  // namespace rayo

@@ -31,10 +31,12 @@ struct SurfaceHit {
     // to the group's objects. kNoInstance for everything placed directly.
     uint32_t instance = kNoInstance;
     uint32_t group_geometry = 0;
-    // Surface parameterization, filled on request only (Accel::parameterize): no shader needs it
-    // per hit yet, and the sphere's costs an atan2 and an acos.
+    // Surface parameterization, filled on request only (Accel::parameterize: image textures ask
+    // for it; the sphere's costs an atan2 and an acos). Meshes with texture coordinates give
+    // them interpolated, and both tangents ∂p/∂u, ∂p/∂v; other surfaces leave dpdv zero.
     glm::vec2 uv{0.0f};
     Vec3 dpdu{0.0f};
+    Vec3 dpdv{0.0f};
 };
 
 }  // namespace rayo

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/math.h"
+#include "shading/image_map.h"
 
 namespace rayo {
 
@@ -62,6 +63,7 @@ struct SurfaceCoefficients {
 struct Material : SurfaceCoefficients {
     std::string name;
     MaterialTextures textures;  // none by default: the constant coefficients
+    MaterialImages images;      // image textures (shading/image_map.h); none by default
 };
 
 }  // namespace rayo

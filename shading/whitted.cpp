@@ -1,6 +1,7 @@
 #include "shading/whitted.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <optional>
 
@@ -107,6 +108,9 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(
                                    p.facing_geometric);
         }
     }
+    if (m_images && base.images.any()) {
+        p.textured = with_images(hit, base.images, p.material());
+    }
     if (hit.vertex_color != Vec3(1.0f)) {
         // Vertex colours multiply the (textured) diffuse and ambient colours.
         SurfaceCoefficients coloured = p.material();
@@ -118,6 +122,34 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(
     p.shadow_origin = offset_ray_origin(hit, p.facing_geometric);
     if (m_radiosity && p.entering) p.radiosity = m_radiosity->reflected(hit, p.radiosity_reflected);
     return p;
+}
+
+SurfaceCoefficients WhittedIntegrator::with_images(const SurfaceHit& hit,
+                                                   const MaterialImages& images,
+                                                   SurfaceCoefficients c) const {
+    SurfaceHit surface = hit;
+    m_accel.parameterize(surface);
+    // The footprint: the pixel's spread at the hit's distance, in texture units through the
+    // surface's tangents (isotropic: the geometric mean of the two scales).
+    const float world = m_settings.pixel_spread * hit.t;
+    const float du = glm::length(surface.dpdu), dv = glm::length(surface.dpdv);
+    const float scale = dv > 0.0f ? std::sqrt(du * dv) : du;
+    const float width = scale > 0.0f ? world / scale : 0.0f;
+    using Slot = ImageTextures::Slot;
+    if (m_images->has(hit.material, Slot::Base)) {
+        const Vec3 texel(m_images->lookup(hit.material, Slot::Base, surface.uv, width));
+        if (images.ka.used) c.ka = images.ka.apply(texel);
+        if (images.kd.used) c.kd = images.kd.apply(texel);
+        if (images.ks.used) c.ks = images.ks.apply(texel);
+        if (images.reflect.used) c.reflect = images.reflect.apply(texel);
+    }
+    if (m_images->has(hit.material, Slot::Specular)) {
+        c.ks *= Vec3(m_images->lookup(hit.material, Slot::Specular, surface.uv, width));
+    }
+    if (m_images->has(hit.material, Slot::Emission)) {
+        c.emission *= Vec3(m_images->lookup(hit.material, Slot::Emission, surface.uv, width));
+    }
+    return c;
 }
 
 Vec3 WhittedIntegrator::ambient_and_emission(const ShadingPoint& p) const {

@@ -6,6 +6,7 @@
 
 #include "core/accel.h"
 #include "core/stats.h"
+#include "shading/image_texture.h"
 #include "shading/radiosity_field.h"
 #include "shading/shading_scene.h"
 
@@ -26,6 +27,9 @@ struct WhittedSettings {
     // (core/shadow_terminator.h; "render.shadow_terminator": "offset"), or on the flat triangle
     // ("none": the stair-step terminator of coarse meshes, kept for comparison).
     bool terminator_offset = true;
+    // The angle one pixel's samples spread over, radians (the camera's pixel angle / √spp):
+    // image textures filter over the footprint pixel_spread·t (docs/textures.md).
+    float pixel_spread = 0.0f;
 };
 
 class WhittedIntegrator {
@@ -34,9 +38,12 @@ class WhittedIntegrator {
     // the radiance its patches reflect in place of ka·Ia, and area lights (whose emitting
     // surfaces are in the solve) give it no direct light; point and directional lights, which
     // are not in the solve, still do.
+    // `images` holds the image textures of the scene's materials (shading/image_texture.h);
+    // without it materials shade with their constant factors.
     WhittedIntegrator(const Accel& accel, const ShadingScene& scene, const WhittedSettings& s,
-                      const RadiosityField* radiosity = nullptr)
-        : m_accel(accel), m_scene(scene), m_settings(s), m_radiosity(radiosity) {}
+                      const RadiosityField* radiosity = nullptr,
+                      const ImageTextures* images = nullptr)
+        : m_accel(accel), m_scene(scene), m_settings(s), m_radiosity(radiosity), m_images(images) {}
 
     // Radiance arriving along `ray` (a camera ray: counts it as such).
     Vec3 radiance(const Ray& ray, RayCounters& counters) const;
@@ -63,6 +70,10 @@ class WhittedIntegrator {
     };
     ShadingPoint prepare(const Ray& ray, const SurfaceHit& hit,
                          const SurfaceCoefficients* medium) const;
+    // The material's image textures at the hit (its texture coordinates from
+    // Accel::parameterize), replacing the coefficients they drive.
+    SurfaceCoefficients with_images(const SurfaceHit& hit, const MaterialImages& images,
+                                    SurfaceCoefficients coefficients) const;
     // Which side of the surface a light sample lies on: the side the ray arrived on (the local
     // model), the far side of a translucent surface (diffuse transmission), or neither.
     enum class LightSide { None, Front, Back };
@@ -109,6 +120,7 @@ class WhittedIntegrator {
     const ShadingScene& m_scene;
     WhittedSettings m_settings;
     const RadiosityField* m_radiosity;
+    const ImageTextures* m_images;
 };
 
 // Origin of a ray leaving `hit` on the side `side_normal` points to: offset along the

@@ -142,6 +142,8 @@ render options:
                            [scene's render.gi, default none]
   --gi-view V              radiosity: smooth (vertex colours, default) or patches (flat)
   --gi-log FILE            radiosity: write the unshot energy after every shot (CSV)
+  --texture-cache MB       image textures: decoded tiles held at once, MB (docs/textures.md)
+                           [scene's render.texture_cache_mb, default 256]
   --display D, --view V    OCIO display and view for PNG/TIFF/JPEG [config defaults]
   --range R                clamp (default) or normalize (divide by the image maximum)
   --half                   write EXR as half float
@@ -306,6 +308,7 @@ struct RenderArgs {
     std::optional<ShapeMethod> shape_method;
     std::optional<AntiAliasing> aa;
     std::optional<float> aa_threshold;
+    std::optional<float> texture_cache_mb;
     std::optional<int> aa_depth;
     std::optional<GlobalIllumination> gi;
     bool gi_view_patches = false;
@@ -377,6 +380,8 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             } else {
                 throw UsageError(a + ": expected 'stratified' or 'adaptive', got '" + m + "'");
             }
+        } else if (a == "--texture-cache") {
+            r.texture_cache_mb = static_cast<float>(parse_number(a, cursor.value(), 1.0, 1e6));
         } else if (a == "--aa-threshold") {
             r.aa_threshold = static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
         } else if (a == "--shadow-terminator") {
@@ -495,6 +500,7 @@ void apply_overrides(const RenderArgs& args, SceneDescription& d) {
     if (args.shape_method) d.settings.shape_method = *args.shape_method;
     if (args.aa) d.settings.aa = *args.aa;
     if (args.aa_threshold) d.settings.adaptive.threshold = *args.aa_threshold;
+    if (args.texture_cache_mb) d.settings.texture_cache_mb = *args.texture_cache_mb;
     if (args.aa_depth) d.settings.adaptive.depth = *args.aa_depth;
     if (args.terminator_offset) d.settings.whitted.terminator_offset = *args.terminator_offset;
     if (args.gi) d.settings.gi = *args.gi;
@@ -629,6 +635,23 @@ void apply_test_interrupt(PartialRender& partial) {
     if (tiles > 0) partial.raise_after(tiles, term ? SIGTERM : SIGINT);
 }
 
+// "N images (E MB encoded, D MB decoded), cache U MB used, peak P MB, limit L MB".
+std::string texture_summary(const RenderResult& r) {
+    const ImageTextureStats& t = r.textures;
+    const auto mb = [](int64_t bytes) {
+        std::ostringstream text;
+        text << std::fixed << std::setprecision(1)
+             << static_cast<double>(bytes) / (1024.0 * 1024.0);
+        return text.str();
+    };
+    std::ostringstream text;
+    text << t.textures << " image(s) (" << mb(t.encoded_bytes) << " MB encoded, "
+         << mb(t.image_bytes) << " MB decoded), cache " << mb(t.memory_used) << " MB used, peak "
+         << mb(t.memory_peak) << " MB, limit " << std::fixed << std::setprecision(0) << t.limit_mb
+         << " MB";
+    return text.str();
+}
+
 void print_stats_table(std::ostream& out, const SceneDescription& d, const RenderResult& r,
                        double parse_s, double write_s, bool streamed) {
     const RayCounters& c = r.counters;
@@ -660,7 +683,10 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
             << d.scene.instanced_object_count() << " objects placed through instances\n";
     }
     out << "  materials, lights           " << d.shading.materials.size() << ", "
-        << d.shading.lights.size() << "\n"
+        << d.shading.lights.size() << "\n";
+    if (r.textures.textures > 0)
+        out << "  image textures              " << texture_summary(r) << "\n";
+    out << ""
         << "  max depth                   " << d.settings.whitted.max_depth << "\n"
         << "  time parse                  " << format_duration(parse_s) << "\n"
         << "  time BVH build              " << format_duration(r.bvh_seconds) << "\n"
@@ -880,6 +906,9 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
             << human_count(c.shadow) << ", reflect " << human_count(c.reflection) << ", refract "
             << human_count(c.refraction) << ") " << std::fixed << std::setprecision(2) << mrays
             << " Mrays/s | total " << format_duration(seconds_since(total_start)) << "\n";
+        if (args.stats && result.textures.textures > 0) {
+            out << "rayo: textures " << texture_summary(result) << "\n";
+        }
         if (result.radiosity) {
             const RadiosityStats& rs = result.radiosity_stats;
             out << "rayo: radiosity " << result.radiosity_patches << " patches | solve "

@@ -15,6 +15,7 @@
 #include "apps/scene/input_file.h"
 #include "apps/scene/mesh_loader.h"
 #include "apps/scene/sphereflake.h"
+#include "apps/scene/texture_image.h"
 #include "core/error.h"
 #include "core/path_util.h"
 #include "core/scene_limits.h"
@@ -664,6 +665,10 @@ class SceneParser {
                            const Vec3& fallback, int32_t& texture) const;
     Material parse_material(const Json& value, const std::string& pointer,
                             const std::string& name) const;
+    // An image texture {"image": file, "factor", "wrap", "colorspace", "scale", "offset"}
+    // (docs/textures.md, "Image textures") when object[key] is an object; its factor in `factor`.
+    bool image_map(const Json& object, const std::string& pointer, const char* key, ImageMap& map,
+                   Vec3& factor) const;
     Light parse_light(const Json& value, const std::string& pointer) const;
     AreaLight parse_area_light(const Json& value, const std::string& pointer) const;
     Fog parse_fog(const Json& value, const std::string& pointer) const;
@@ -697,6 +702,7 @@ class SceneParser {
     FileAccess m_access;
     std::map<std::string, uint32_t> m_material_ids;
     std::map<std::string, int32_t> m_texture_ids;  // name -> index in ShadingScene::textures
+    mutable TextureImageCache m_images;            // image textures read so far, by path
     std::map<std::string, uint32_t> m_group_ids;   // name -> index in Scene::groups
 };
 
@@ -838,9 +844,18 @@ void SceneParser::parse_camera(const Json& value, const std::string& pointer,
 void SceneParser::parse_render(const Json& value, const std::string& pointer,
                                RenderSettings& s) const {
     require_object(value, pointer, "a render settings object");
-    check_keys(value, pointer,
-               {"spp", "max_depth", "min_contribution", "tile_size", "sphere_math", "sphere_method",
-                "aa", "aa_threshold", "aa_depth", "shadows", "shadow_terminator", "gi"});
+    check_keys(
+        value, pointer,
+        {"spp", "max_depth", "min_contribution", "tile_size", "sphere_math", "sphere_method", "aa",
+         "aa_threshold", "aa_depth", "shadows", "shadow_terminator", "gi", "texture_cache_mb"});
+    if (const Json* v = find(value, "texture_cache_mb")) {
+        // The image-texture cache (docs/textures.md): at least 1 MB, at most 1 TB.
+        s.texture_cache_mb = real(*v, child(pointer, "texture_cache_mb"));
+        if (!(s.texture_cache_mb >= 1.0f && s.texture_cache_mb <= 1e6f)) {
+            fail(child(pointer, "texture_cache_mb"),
+                 "expected a cache size in MB from 1 to 1000000, got " + describe(*v));
+        }
+    }
     if (const Json* v = find(value, "shadows")) {
         s.whitted.shadows =
             choice(*v, child(pointer, "shadows"), {"opaque", "filtered"}) == "filtered"
@@ -1047,6 +1062,51 @@ Texture SceneParser::parse_texture(const Json& value, const std::string& pointer
     return t;
 }
 
+bool SceneParser::image_map(const Json& object, const std::string& pointer, const char* key,
+                            ImageMap& map, Vec3& factor) const {
+    const Json* value = find(object, key);
+    if (!value || !value->is_object()) return false;
+    const std::string at = child(pointer, key);
+    check_keys(*value, at, {"image", "factor", "wrap", "colorspace", "scale", "offset"});
+    const Json& file = require(*value, at, "image", "the path of an image file");
+    if (!file.is_string() || file.get<std::string>().empty()) {
+        fail(child(at, "image"), "expected the path of an image file, got " + describe(file));
+    }
+    const std::string path = join_path(m_base_dir, file.get<std::string>());
+    map.image = load_texture_image(path, m_source + "#" + child(at, "image"), m_access, &m_images);
+    factor = colour_or(*value, at, "factor", Vec3(1.0f));
+    if (const Json* v = find(*value, "wrap")) {
+        const std::string wrap = choice(*v, child(at, "wrap"), {"repeat", "clamp", "mirror"});
+        map.wrap_s = map.wrap_t = wrap == "clamp"    ? TextureWrap::Clamp
+                                  : wrap == "mirror" ? TextureWrap::Mirror
+                                                     : TextureWrap::Repeat;
+    }
+    if (const Json* v = find(*value, "colorspace")) {
+        const std::string space = choice(*v, child(at, "colorspace"), {"auto", "srgb", "linear"});
+        map.encoding = space == "srgb"     ? TextureEncoding::Srgb
+                       : space == "linear" ? TextureEncoding::Linear
+                                           : TextureEncoding::Auto;
+    }
+    // (s, t) = scale·(u, v) + offset: repeats and shifts of the image across the surface.
+    glm::vec2 scale(1.0f), offset(0.0f);
+    auto pair = [&](const char* name, glm::vec2& out) {
+        const Json* v = find(*value, name);
+        if (!v) return;
+        const std::string where = child(at, name);
+        if (v->is_number()) {
+            out = glm::vec2(real(*v, where));
+        } else if (v->is_array() && v->size() == 2) {
+            out = glm::vec2(real((*v)[0], child(where, "0")), real((*v)[1], child(where, "1")));
+        } else {
+            fail(where, std::string("expected a number or [u, v], got ") + describe(*v));
+        }
+    };
+    pair("scale", scale);
+    pair("offset", offset);
+    map.transform = glm::mat3(scale.x, 0.0f, 0.0f, 0.0f, scale.y, 0.0f, offset.x, offset.y, 1.0f);
+    return true;
+}
+
 Material SceneParser::parse_material(const Json& value, const std::string& pointer,
                                      const std::string& name) const {
     require_object(value, pointer, "a material object");
@@ -1055,9 +1115,20 @@ Material SceneParser::parse_material(const Json& value, const std::string& point
                 "translucency", "absorption", "emission", "bump"});
     Material m;
     m.name = name;
-    // Each of kd, ka, ks is a colour or the name of a texture (seed 003 ch. 3).
-    m.kd = colour_or_texture(value, pointer, "kd", Vec3(0.8f), m.textures.kd);  // seed 000 [22]
-    if (find(value, "ka")) {
+    // Each of kd, ka, ks is a colour or the name of a texture (seed 003 ch. 3); kd, ks and
+    // emission may also be an image texture (kd = factor·texel; ka follows it by default).
+    Vec3 factor(1.0f);
+    const bool kd_image = image_map(value, pointer, "kd", m.images.base, factor);
+    if (kd_image) {
+        m.kd = factor;
+        m.images.kd = ImageTerm{true, Vec3(0.0f), factor};
+    } else {
+        m.kd = colour_or_texture(value, pointer, "kd", Vec3(0.8f), m.textures.kd);  // seed 000 [22]
+    }
+    if (kd_image && !find(value, "ka")) {
+        m.ka = 0.1f * m.kd;
+        m.images.ka = ImageTerm{true, Vec3(0.0f), 0.1f * factor};
+    } else if (find(value, "ka")) {
         m.ka = colour_or_texture(value, pointer, "ka", Vec3(0.1f), m.textures.ka);  // seed 000 [20]
     } else {
         m.ka = 0.1f * m.kd;
@@ -1066,7 +1137,11 @@ Material SceneParser::parse_material(const Json& value, const std::string& point
             m.textures.ka_scale = 0.1f;
         }
     }
-    m.ks = colour_or_texture(value, pointer, "ks", Vec3(0.0f), m.textures.ks);  // seed 000 [24]
+    if (image_map(value, pointer, "ks", m.images.specular, factor)) {
+        m.ks = factor;  // × the image (the specular slot multiplies ks)
+    } else {
+        m.ks = colour_or_texture(value, pointer, "ks", Vec3(0.0f), m.textures.ks);  // seed 000 [24]
+    }
     if (const Json* v = find(value, "bump")) {  // seed 003's suggested extension
         const std::string bump_pointer = child(pointer, "bump");
         require_object(*v, bump_pointer, "a bump object {\"texture\": name, \"strength\": s}");
@@ -1100,7 +1175,11 @@ Material SceneParser::parse_material(const Json& value, const std::string& point
     }
     m.translucency = colour_or(value, pointer, "translucency", Vec3(0.0f));  // seed 001
     m.absorption = colour_or(value, pointer, "absorption", Vec3(0.0f));      // Beer–Lambert
-    m.emission = colour_or(value, pointer, "emission", Vec3(0.0f));
+    if (image_map(value, pointer, "emission", m.images.emission, factor)) {
+        m.emission = factor;  // × the image
+    } else {
+        m.emission = colour_or(value, pointer, "emission", Vec3(0.0f));
+    }
     return m;
 }
 
@@ -1742,6 +1821,13 @@ void SceneParser::parse_mesh(const Json& value, const std::string& pointer, Scen
     ImportedMesh imported = import_mesh_file(path, materials, options);
     TriangleMesh& mesh = imported.mesh;
     if (overridden) std::fill(mesh.materials.begin(), mesh.materials.end(), override_id);
+    if (overridden && mesh.uvs.empty() && out.shading.materials[override_id].images.any()) {
+        fail(child(pointer, "material"),
+             "material \"" + out.shading.materials[override_id].name +
+                 "\" has an image texture but mesh '" + path +
+                 "' has no texture coordinates (OBJ vt, glTF TEXCOORD_0)");
+    }
+
     if (smooth.has_value()) {
         if (!*smooth) {
             mesh.normals.clear();  // flat: shade with the geometric normal

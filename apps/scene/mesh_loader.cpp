@@ -28,6 +28,7 @@
 #include "apps/scene/gltf_draco.h"
 #include "apps/scene/gltf_nodes.h"
 #include "apps/scene/input_file.h"
+#include "apps/scene/texture_image.h"
 #include "core/error.h"
 #include "core/math.h"
 #include "core/path_util.h"
@@ -266,11 +267,22 @@ class MaterialLibraryReader : public tinyobj::MaterialReader {
         }
         std::istringstream text(
             read_input_file(path, m_obj_path, "material library", kMaxMaterialFileBytes, m_access));
+        library_starts.emplace_back(materials->size(), parent_directory(path));
         tinyobj::LoadMtl(names, materials, &text, warn, err);
         return true;
     }
 
+    // The folder of the library that defined material i: texture maps are relative to it.
+    std::string directory_of(size_t material) const {
+        std::string dir = parent_directory(m_obj_path);
+        for (const auto& [first, folder] : library_starts) {
+            if (first <= material) dir = folder;
+        }
+        return dir;
+    }
+
     std::vector<std::string> missing;  // libraries named by `mtllib` that do not exist
+    std::vector<std::pair<size_t, std::string>> library_starts;  // (first material, folder)
 
   private:
     std::string m_obj_path;
@@ -283,6 +295,56 @@ Vec3 obj_vertex_color(const tinyobj::attrib_t& attrib, size_t v, const std::stri
     const Vec3 c(attrib.colors[3 * v], attrib.colors[3 * v + 1], attrib.colors[3 * v + 2]);
     require_colour(c, path, "vertex " + std::to_string(v + 1) + " colour (r g b)");
     return c;
+}
+
+// A texture map a model file names (MTL map_Kd, a glTF image): null, with a warning naming the
+// file and the material, when it is missing or unreadable; the material then shades with its
+// factor (assets often travel without their textures).
+std::shared_ptr<const ImageSource> model_texture(const std::string& file, const std::string& model,
+                                                 const std::string& what, const FileAccess& access,
+                                                 TextureImageCache& cache, MeshImportStats* stats) {
+    try {
+        return load_texture_image(file, model, access, &cache);
+    } catch (const InputError& e) {
+        if (stats) {
+            stats->warnings.push_back(model + ": " + what + ": " + e.message() +
+                                      "; shading with the material's factor");
+        }
+        return nullptr;
+    }
+}
+
+// MTL maps (docs/textures.md): map_Kd multiplies Kd (kd = Kd·texel; the default ambient
+// follows it when Ka equals Kd), map_Ks multiplies Ks. Paths are relative to the library's
+// folder (backslashes read as slashes); -s and -o scale and offset the coordinates, -clamp
+// clamps them. Both maps are sRGB-encoded colour by convention.
+void attach_mtl_images(Material& out, const tinyobj::material_t& m, const std::string& dir,
+                       const std::string& path, const FileAccess& access, TextureImageCache& cache,
+                       MeshImportStats* stats) {
+    auto map_of = [&](const std::string& name, const tinyobj::texture_option_t& option,
+                      const char* statement) {
+        ImageMap map;
+        if (name.empty()) return map;
+        std::string file = name;
+        std::replace(file.begin(), file.end(), '\\', '/');
+        map.image = model_texture(join_path(dir, file), path,
+                                  "material '" + m.name + "' " + statement + " '" + name + "'",
+                                  access, cache, stats);
+        map.encoding = TextureEncoding::Srgb;
+        map.wrap_s = map.wrap_t = option.clamp ? TextureWrap::Clamp : TextureWrap::Repeat;
+        // OBJ's v points up, the image's t down (TriangleMesh::uvs holds t = 1 − v):
+        // s = su·u + ou, t = 1 − (sv·v + ov) = sv·t + 1 − sv − ov.
+        const float su = option.scale[0], sv = option.scale[1];
+        map.transform = glm::mat3(su, 0.0f, 0.0f, 0.0f, sv, 0.0f, option.origin_offset[0],
+                                  1.0f - sv - option.origin_offset[1], 1.0f);
+        return map;
+    };
+    out.images.base = map_of(m.diffuse_texname, m.diffuse_texopt, "map_Kd");
+    if (out.images.base.used()) {
+        out.images.kd = ImageTerm{true, Vec3(0.0f), out.kd};
+        if (out.ka == out.kd) out.images.ka = ImageTerm{true, Vec3(0.0f), out.ka};
+    }
+    out.images.specular = map_of(m.specular_texname, m.specular_texopt, "map_Ks");
 }
 
 }  // namespace
@@ -334,7 +396,12 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
     }
 
     std::vector<Material> converted;
-    for (const auto& m : file_materials) converted.push_back(material_from_mtl(m, path));
+    TextureImageCache textures;
+    for (size_t i = 0; i < file_materials.size(); ++i) {
+        converted.push_back(material_from_mtl(file_materials[i], path));
+        attach_mtl_images(converted.back(), file_materials[i], mtl_reader.directory_of(i), path,
+                          access, textures, stats);
+    }
 
     TriangleMesh mesh;
     mesh.name = file_name(path);
@@ -356,8 +423,18 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
     const auto first_material = static_cast<uint32_t>(materials.size());
     bool needs_default = false;
     constexpr uint32_t kNoMaterial = std::numeric_limits<uint32_t>::max();
-    // One rayo vertex per distinct (position, normal) pair: OBJ indexes them separately.
-    std::map<std::pair<int, int>, uint32_t> vertex_ids;
+    // Texture coordinates (`vt`), when every corner of every face has one.
+    const size_t texcoord_count = attrib.texcoords.size() / 2;
+    bool all_texcoords = texcoord_count > 0;
+    for (const auto& shape : shapes) {
+        for (const auto& index : shape.mesh.indices) {
+            all_texcoords &= index.texcoord_index >= 0 &&
+                             static_cast<size_t>(index.texcoord_index) < texcoord_count;
+        }
+    }
+    // One rayo vertex per distinct (position, normal, texture coordinate): OBJ indexes them
+    // separately.
+    std::map<std::array<int, 3>, uint32_t> vertex_ids;
     for (const auto& shape : shapes) {
         const auto& indices = shape.mesh.indices;
         for (size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
@@ -377,7 +454,8 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
                                                std::to_string(normal_count) + " normals)");
                 }
                 const int normal_index = any_normal ? index.normal_index : -1;
-                const auto key = std::make_pair(index.vertex_index, normal_index);
+                const int texcoord_index = all_texcoords ? index.texcoord_index : -1;
+                const std::array<int, 3> key{index.vertex_index, normal_index, texcoord_index};
                 auto found = vertex_ids.find(key);
                 if (found == vertex_ids.end()) {
                     const auto v = static_cast<size_t>(index.vertex_index);
@@ -396,6 +474,15 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
                     }
                     if (!attrib.colors.empty()) {
                         mesh.colors.push_back(obj_vertex_color(attrib, v, path));
+                    }
+                    if (all_texcoords) {
+                        const auto ti = static_cast<size_t>(texcoord_index);
+                        const glm::vec2 uv(attrib.texcoords[2 * ti], attrib.texcoords[2 * ti + 1]);
+                        if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) {
+                            throw InputError(path, "texture coordinate " + std::to_string(ti + 1) +
+                                                       " is not finite");
+                        }
+                        mesh.uvs.emplace_back(uv.x, 1.0f - uv.y);  // OBJ's v points up
                     }
                     found =
                         vertex_ids.emplace(key, static_cast<uint32_t>(mesh.positions.size() - 1))
@@ -601,6 +688,43 @@ std::vector<Vec3> read_colors(const tinygltf::Model& model, int accessor, const 
     return out;
 }
 
+// TEXCOORD_n: VEC2 of floats or of normalized unsigned bytes or shorts (glTF 2.0, "Meshes"),
+// (0, 0) the image's top-left corner as in OpenImageIO.
+std::vector<glm::vec2> read_texcoords(const tinygltf::Model& model, int accessor,
+                                      const std::string& path, const std::string& what) {
+    const bool exists = accessor >= 0 && static_cast<size_t>(accessor) < model.accessors.size();
+    const int component =
+        exists ? model.accessors[static_cast<size_t>(accessor)].componentType : -1;
+    if (exists && component != TINYGLTF_COMPONENT_TYPE_FLOAT &&
+        component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        component != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+        throw InputError(path, what +
+                                   ": expected float, unsigned byte or unsigned short "
+                                   "texture coordinates");
+    }
+    const AccessorView view =
+        view_accessor(model, accessor, component, TINYGLTF_TYPE_VEC2, path, what);
+    std::vector<glm::vec2> out(view.count);
+    for (size_t i = 0; i < view.count; ++i) {
+        const unsigned char* element = view.data + i * view.stride;
+        for (int k = 0; k < 2; ++k) {
+            if (component == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+                std::memcpy(&out[i][k], element + 4 * k, 4);
+            } else if (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+                out[i][k] = static_cast<float>(element[k]) / 255.0f;
+            } else {
+                uint16_t value;
+                std::memcpy(&value, element + 2 * k, 2);
+                out[i][k] = static_cast<float>(value) / 65535.0f;
+            }
+        }
+        if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y)) {
+            throw InputError(path, what + ": element " + std::to_string(i) + " is not finite");
+        }
+    }
+    return out;
+}
+
 std::vector<uint32_t> read_indices(const tinygltf::Model& model, int accessor,
                                    const std::string& path, const std::string& what) {
     const AccessorView view = view_accessor(model, accessor, -1, TINYGLTF_TYPE_SCALAR, path, what);
@@ -663,6 +787,7 @@ struct GltfBuilder {
     bool any_colors = false;
     GltfNodes* nodes = nullptr;  // cameras and lights, and meshes kept for instancing
     std::vector<std::pair<int, glm::dmat4>> mesh_placements;  // (mesh, world), with instancing
+    bool any_uvs = false;
     size_t shared_degenerate = 0;  // zero-area triangles dropped from shared meshes (once each)
 
     void append_mesh(int mesh_index, const glm::dmat4& world) {
@@ -688,9 +813,9 @@ struct GltfBuilder {
             auto it = shared.find(m);
             if (it == shared.end()) {
                 TriangleMesh flat = std::move(mesh);
-                const bool flat_normals = any_normals, flat_colors = any_colors;
+                const bool flat_normals = any_normals, flat_colors = any_colors, flat_uvs = any_uvs;
                 mesh = TriangleMesh();
-                any_normals = any_colors = false;
+                any_normals = any_colors = any_uvs = false;
                 append_mesh(m, glm::dmat4(1.0));
                 mesh.name = model.meshes[static_cast<size_t>(m)].name.empty()
                                 ? "mesh " + std::to_string(m)
@@ -701,6 +826,7 @@ struct GltfBuilder {
                 mesh = std::move(flat);
                 any_normals = flat_normals;
                 any_colors = flat_colors;
+                any_uvs = flat_uvs;
             }
             nodes->placements.push_back({it->second, glm::mat4(world)});
         }
@@ -735,6 +861,13 @@ struct GltfBuilder {
             piece.colors = read_colors(model, color->second, path, what + " COLOR_0");
             if (piece.colors.size() != piece.positions.size()) {
                 throw InputError(path, what + ": COLOR_0 and POSITION counts differ");
+            }
+        }
+        const auto texcoord = primitive.attributes.find("TEXCOORD_0");
+        if (texcoord != primitive.attributes.end()) {
+            piece.uvs = read_texcoords(model, texcoord->second, path, what + " TEXCOORD_0");
+            if (piece.uvs.size() != piece.positions.size()) {
+                throw InputError(path, what + ": TEXCOORD_0 and POSITION counts differ");
             }
         }
         std::vector<uint32_t> indices;
@@ -783,7 +916,18 @@ struct GltfBuilder {
             mesh.colors.assign(mesh.positions.size(), Vec3(1.0f));  // white: no colour so far
             any_colors = true;
         }
+        if (!piece.uvs.empty() && !any_uvs) {
+            mesh.uvs.assign(mesh.positions.size(), glm::vec2(0.0f));  // (0, 0): none so far
+            any_uvs = true;
+        }
         mesh.positions.insert(mesh.positions.end(), piece.positions.begin(), piece.positions.end());
+        if (any_uvs) {
+            if (piece.uvs.empty()) {
+                mesh.uvs.resize(mesh.positions.size(), glm::vec2(0.0f));
+            } else {
+                mesh.uvs.insert(mesh.uvs.end(), piece.uvs.begin(), piece.uvs.end());
+            }
+        }
         if (any_colors) {
             if (piece.colors.empty()) {
                 mesh.colors.resize(mesh.positions.size(), Vec3(1.0f));
@@ -830,10 +974,141 @@ struct GltfBuilder {
     }
 };
 
-// Image data is not used by rayo: skip decoding (and do not fail on missing textures).
-bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                  const unsigned char*, int, void*) {
+// Images are decoded by the render's texture system (shading/image_texture.h): keep their
+// encoded bytes (from a file, a buffer view or a data URI) as they are. tinygltf does not call
+// this for a missing file: its image stays empty (a warning, the material's factor).
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+    image->image.assign(bytes, bytes + size);
     return true;
+}
+
+// glTF sampler wrap modes (glTF 2.0, "Samplers"): 33071 CLAMP_TO_EDGE, 33648 MIRRORED_REPEAT,
+// 10497 REPEAT (the default).
+TextureWrap gltf_wrap(int mode) {
+    if (mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return TextureWrap::Clamp;
+    if (mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return TextureWrap::Mirror;
+    return TextureWrap::Repeat;
+}
+
+double value_number(const tinygltf::Value& object, const char* key, int index, double fallback) {
+    if (!object.Has(key)) return fallback;
+    const tinygltf::Value& v = object.Get(key);
+    if (index >= 0) {
+        if (!v.IsArray() || v.ArrayLen() <= static_cast<size_t>(index)) return fallback;
+        const tinygltf::Value& e = v.Get(index);
+        return e.IsNumber() ? e.GetNumberAsDouble() : fallback;
+    }
+    return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
+}
+
+// The textures of a glTF file's materials: each image becomes one ImageSource the first time a
+// material uses it.
+struct GltfTextures {
+    const tinygltf::Model& model;
+    const std::string& path;
+    MeshImportStats* stats;
+    std::map<int, std::shared_ptr<const ImageSource>> images;
+
+    void warn(const std::string& message) const {
+        if (stats) stats->warnings.push_back(path + ": " + message);
+    }
+
+    // textureInfo -> ImageMap (no image, with a warning, when it cannot be used): the sampler's
+    // wrap modes and KHR_texture_transform's offset, rotation and scale,
+    // (s, t, 1) = T·R·S·(u, v, 1), R = (cos r, sin r; −sin r, cos r).
+    ImageMap map(const tinygltf::TextureInfo& info, const std::string& material, const char* slot) {
+        ImageMap out;
+        if (info.index < 0) return out;
+        const std::string what = "material '" + material + "' " + slot;
+        if (static_cast<size_t>(info.index) >= model.textures.size()) {
+            throw InputError(path,
+                             what + ": texture " + std::to_string(info.index) + " does not exist");
+        }
+        const tinygltf::Texture& texture = model.textures[static_cast<size_t>(info.index)];
+        if (texture.source < 0 || static_cast<size_t>(texture.source) >= model.images.size()) {
+            warn(what + ": texture " + std::to_string(info.index) +
+                 " has no image rayo reads (only core glTF images); shading with the factor");
+            return out;
+        }
+        int tex_coord = info.texCoord;
+        glm::mat3 transform(1.0f);
+        const auto ext = info.extensions.find("KHR_texture_transform");
+        if (ext != info.extensions.end()) {
+            const tinygltf::Value& t = ext->second;
+            const auto offset =
+                glm::vec2(value_number(t, "offset", 0, 0.0), value_number(t, "offset", 1, 0.0));
+            const auto rotation = static_cast<float>(value_number(t, "rotation", -1, 0.0));
+            const auto scale =
+                glm::vec2(value_number(t, "scale", 0, 1.0), value_number(t, "scale", 1, 1.0));
+            tex_coord = static_cast<int>(value_number(t, "texCoord", -1, tex_coord));
+            const glm::mat3 translation(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
+            const float c = std::cos(rotation), s = std::sin(rotation);
+            // Rows (c, s; −s, c): the direction the extension's sample model
+            // (TextureTransformTest) and three.js, its reference viewer, rotate in.
+            const glm::mat3 rotate(c, -s, 0, s, c, 0, 0, 0, 1);
+            const glm::mat3 scaling(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
+            transform = translation * rotate * scaling;
+        }
+        if (tex_coord != 0) {
+            warn(what + " uses TEXCOORD_" + std::to_string(tex_coord) +
+                 "; rayo reads TEXCOORD_0 only and uses it instead");
+        }
+        out.image = image(texture.source, what);
+        out.transform = transform;
+        out.encoding = TextureEncoding::Srgb;  // base colour and emission: sRGB (glTF 2.0)
+        if (texture.sampler >= 0 && static_cast<size_t>(texture.sampler) < model.samplers.size()) {
+            const tinygltf::Sampler& sampler = model.samplers[static_cast<size_t>(texture.sampler)];
+            out.wrap_s = gltf_wrap(sampler.wrapS);
+            out.wrap_t = gltf_wrap(sampler.wrapT);
+        }
+        return out;
+    }
+
+    std::shared_ptr<const ImageSource> image(int index, const std::string& what) {
+        const auto found = images.find(index);
+        if (found != images.end()) return found->second;
+        const tinygltf::Image& image = model.images[static_cast<size_t>(index)];
+        const std::string name = !image.uri.empty() && image.uri.rfind("data:", 0) != 0
+                                     ? join_path(parent_directory(path), image.uri)
+                                     : file_name(path) + " image " + std::to_string(index) +
+                                           (image.name.empty() ? "" : " '" + image.name + "'");
+        std::shared_ptr<const ImageSource> source;
+        if (image.image.empty()) {
+            warn(what + ": image '" + name + "' not found or unreadable; shading with the factor");
+        } else {
+            try {
+                source = texture_image_from_bytes(
+                    name, std::string(image.image.begin(), image.image.end()), path);
+            } catch (const InputError& e) {
+                warn(what + ": " + e.message() + "; shading with the factor");
+            }
+        }
+        images.emplace(index, source);
+        return source;
+    }
+};
+
+// baseColorTexture and emissiveTexture (docs/textures.md): the texel multiplies the factor, so
+// the metallic workflow's coefficients (material_from_gltf) are affine in it:
+// kd = (1 − m)·f·c, ka = 0.1·f·c, ks = 0.04(1 − m) + m·f·c, reflect = g·ks.
+void attach_gltf_images(Material& out, const tinygltf::Material& m, GltfTextures& textures) {
+    const auto& pbr = m.pbrMetallicRoughness;
+    out.images.base = textures.map(pbr.baseColorTexture, out.name, "baseColorTexture");
+    if (out.images.base.used()) {
+        const Vec3 factor(static_cast<float>(pbr.baseColorFactor[0]),
+                          static_cast<float>(pbr.baseColorFactor[1]),
+                          static_cast<float>(pbr.baseColorFactor[2]));
+        const auto metallic = static_cast<float>(pbr.metallicFactor);
+        const auto gloss =
+            static_cast<float>((1.0 - pbr.roughnessFactor) * (1.0 - pbr.roughnessFactor));
+        const Vec3 f0_offset(0.04f * (1.0f - metallic));
+        out.images.kd = ImageTerm{true, Vec3(0.0f), (1.0f - metallic) * factor};
+        out.images.ka = ImageTerm{true, Vec3(0.0f), 0.1f * factor};
+        out.images.ks = ImageTerm{true, f0_offset, metallic * factor};
+        out.images.reflect = ImageTerm{true, gloss * f0_offset, gloss * metallic * factor};
+    }
+    out.images.emission = textures.map(m.emissiveTexture, out.name, "emissiveTexture");
 }
 
 // tinygltf's file system, through read_input_file: buffers and images must be regular files of
@@ -901,7 +1176,8 @@ std::string replace_glb_json(const std::string& bytes, std::string json) {
 }
 
 // The glTF extensions a file may require: the ones rayo implements.
-const std::set<std::string> kSupportedRequiredExtensions = {kDracoExtension};
+const std::set<std::string> kSupportedRequiredExtensions = {kDracoExtension,
+                                                            "KHR_texture_transform"};
 
 // A glTF loader must refuse a file whose `extensionsRequired` names an extension it does not
 // implement (glTF 2.0 specification, 3.12); each one is named.
@@ -934,7 +1210,7 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
     const std::string bytes = read_input_file(path, where, "mesh file", kMaxMeshFileBytes, access);
     GltfFiles files{path, access, {}};
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(ignore_image, nullptr);
+    loader.SetImageLoader(keep_image_bytes, nullptr);
     loader.SetFsCallbacks(
         {&gltf_file_exists, &gltf_expand_path, &gltf_read_file, &gltf_refuse_write, &files});
     tinygltf::Model model;
@@ -967,8 +1243,10 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
     decode_draco_primitives(model, path);
 
     std::vector<Material> converted;
+    GltfTextures textures{model, path, stats, {}};
     for (size_t i = 0; i < model.materials.size(); ++i) {
         converted.push_back(material_from_gltf(model.materials[i], i, path));
+        attach_gltf_images(converted.back(), model.materials[i], textures);
     }
     GltfBuilder builder(model, path, materials);
     materials.insert(materials.end(), converted.begin(), converted.end());
@@ -1076,16 +1354,27 @@ void transform_mesh(TriangleMesh& mesh, const glm::dmat4& transform) {
 }
 
 void compute_vertex_normals(TriangleMesh& mesh) {
+    // Vertices split only by their texture coordinates (a seam of the texture map) are one
+    // point of the surface: they share one normal, so the seam leaves no crease.
+    std::vector<uint32_t> point(mesh.positions.size());
+    for (size_t i = 0; i < point.size(); ++i) point[i] = static_cast<uint32_t>(i);
+    if (!mesh.uvs.empty()) {
+        std::map<std::array<float, 3>, uint32_t> first;
+        for (size_t i = 0; i < point.size(); ++i) {
+            const Vec3& p = mesh.positions[i];
+            point[i] = first.emplace(std::array<float, 3>{p.x, p.y, p.z}, i).first->second;
+        }
+    }
     std::vector<glm::dvec3> sums(mesh.positions.size(), glm::dvec3(0.0));
     for (const auto& t : mesh.triangles) {
         const glm::dvec3 a(mesh.positions[t[0]]), b(mesh.positions[t[1]]), c(mesh.positions[t[2]]);
         const glm::dvec3 area_normal = glm::cross(b - a, c - a);  // length = 2 × area
-        for (uint32_t v : t) sums[v] += area_normal;
+        for (uint32_t v : t) sums[point[v]] += area_normal;
     }
     mesh.normals.assign(mesh.positions.size(), Vec3(0.0f));
     for (size_t i = 0; i < sums.size(); ++i) {
-        const double length = glm::length(sums[i]);
-        if (length > 0.0) mesh.normals[i] = Vec3(sums[i] / length);
+        const double length = glm::length(sums[point[i]]);
+        if (length > 0.0) mesh.normals[i] = Vec3(sums[point[i]] / length);
     }
 }
 

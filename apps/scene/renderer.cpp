@@ -150,8 +150,19 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
         radiosity->set_flat(description.settings.gi_view_patches);
     }
 
-    const WhittedIntegrator integrator(accel, description.shading, description.settings.whitted,
-                                       radiosity.get());
+    // Image textures: one texture system for the render, made only when a material names an
+    // image (scenes without keep the integrator's settings bit for bit).
+    std::unique_ptr<ImageTextures> images;
+    WhittedSettings whitted = description.settings.whitted;
+    const auto& materials = description.shading.materials;
+    if (std::any_of(materials.begin(), materials.end(),
+                    [](const Material& m) { return m.images.any(); })) {
+        images = std::make_unique<ImageTextures>(materials, description.settings.texture_cache_mb);
+        whitted.pixel_spread =
+            camera.pixel_angle() / std::sqrt(static_cast<float>(description.settings.spp));
+    }
+    const WhittedIntegrator integrator(accel, description.shading, whitted, radiosity.get(),
+                                       images.get());
     if (sink == nullptr && writes_image) result.film = Film(camera.width(), camera.height());
     TileSink& target = sink ? *sink : result.film;
     TileSettings settings;
@@ -190,6 +201,7 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
         }
     }
     result.render_seconds = seconds_since(start);
+    if (images) result.textures = images->stats();
     return result;
 }
 

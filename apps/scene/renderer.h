@@ -9,6 +9,7 @@
 #include "core/stats.h"
 #include "core/tile_distribution.h"
 #include "core/tile_sink.h"
+#include "shading/image_texture.h"
 
 namespace rayo {
 
@@ -30,6 +31,8 @@ struct RenderResult {
     RadiosityStats radiosity_stats;
     // Under a distribution of several processes: what each did (docs/distributed.md).
     std::vector<ProcessWork> processes;
+    // Image textures (docs/textures.md): how many, and the texture cache's memory.
+    ImageTextureStats textures;
 };
 
 // threads = 0: all cores. Throws InputError for an invalid camera. The tiles go to `sink` when

@@ -37,6 +37,9 @@ struct RenderSettings {
     GlobalIllumination gi = GlobalIllumination::None;  // "gi", --gi
     RadiositySettings radiosity;                       // the top-level "radiosity" object
     bool gi_view_patches = false;                      // --gi-view patches: flat patches
+    // The image-texture cache's limit ("texture_cache_mb", --texture-cache): decoded tiles
+    // held at once by the render's TextureSystem (shading/image_texture.h).
+    float texture_cache_mb = kDefaultTextureCacheMB;
 };
 
 struct SceneDescription {

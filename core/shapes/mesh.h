@@ -3,6 +3,7 @@
 // (NFF `pp` patches, smooth OBJ/glTF meshes) and one material id per triangle.
 #include <array>
 #include <cstdint>
+#include <glm/vec2.hpp>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,10 @@ struct TriangleMesh {
     // Empty, or one linear RGB colour per position that multiplies the material's kd and ka
     // (glTF COLOR_0, OBJ `v x y z r g b`), interpolated across each triangle.
     std::vector<Vec3> colors;
+    // Empty, or one texture coordinate per position (OBJ `vt`, glTF TEXCOORD_0), in the image
+    // convention (0, 0) = the image's top-left corner (OBJ's v is flipped on reading); hits get
+    // them interpolated by Accel::parameterize.
+    std::vector<glm::vec2> uvs;
     std::vector<std::array<uint32_t, 3>> triangles;
     std::vector<uint32_t> materials;  // one per triangle
     // Two-sided meshes are hit from both sides (shading faces the normal forward). A one-sided

@@ -1,5 +1,7 @@
 #include "core/shapes/mesh_geometry.h"
 
+#include <cmath>
+
 #include "core/embree_device.h"
 #include "core/shadow_terminator.h"
 
@@ -105,10 +107,32 @@ class MeshBinding : public GeometryBinding {
     }
 
     void parameterize(SurfaceHit& hit) const override {
-        // Without texture coordinates in TriangleMesh: the barycentric (u, v) of the hit, and
-        // ∂p/∂u = p1 − p0.
         const auto& tri = m_mesh.triangles[hit.primitive];
-        hit.dpdu = m_mesh.positions[tri[1]] - m_mesh.positions[tri[0]];
+        const Vec3& p0 = m_mesh.positions[tri[0]];
+        const Vec3 e1 = m_mesh.positions[tri[1]] - p0, e2 = m_mesh.positions[tri[2]] - p0;
+        if (m_mesh.uvs.size() != m_mesh.positions.size()) {
+            // Without texture coordinates: the barycentric (u, v) of the hit, and
+            // ∂p/∂u = p1 − p0.
+            hit.dpdu = e1;
+            return;
+        }
+        // hit.uv holds the barycentrics surface() kept.
+        const float b1 = hit.uv.x, b2 = hit.uv.y;
+        const glm::vec2 &t0 = m_mesh.uvs[tri[0]], &t1 = m_mesh.uvs[tri[1]],
+                        &t2 = m_mesh.uvs[tri[2]];
+        hit.uv = (1.0f - b1 - b2) * t0 + b1 * t1 + b2 * t2;
+        // The tangents solve [e1 e2] = [∂p/∂u ∂p/∂v]·[Δuv1 Δuv2] (pbrt 3, section 3.6.2); a
+        // triangle whose texture coordinates are collinear has none: the edges stand in.
+        const glm::vec2 d1 = t1 - t0, d2 = t2 - t0;
+        const float determinant = d1.x * d2.y - d1.y * d2.x;
+        if (std::abs(determinant) > 1e-12f) {
+            const float inverse = 1.0f / determinant;
+            hit.dpdu = (d2.y * e1 - d1.y * e2) * inverse;
+            hit.dpdv = (d1.x * e2 - d2.x * e1) * inverse;
+        } else {
+            hit.dpdu = e1;
+            hit.dpdv = e2;
+        }
     }
 
   private:

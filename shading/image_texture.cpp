@@ -1,0 +1,224 @@
+#include "shading/image_texture.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagecache.h>
+#include <OpenImageIO/imageio.h>
+#include <OpenImageIO/texture.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <sstream>
+
+#include "shading/material.h"
+
+namespace rayo {
+namespace {
+
+using OIIO::TextureOpt;
+
+TextureOpt::Wrap oiio_wrap(TextureWrap wrap) {
+    switch (wrap) {
+        case TextureWrap::Clamp:
+            return TextureOpt::WrapClamp;
+        case TextureWrap::Mirror:
+            return TextureOpt::WrapMirror;
+        case TextureWrap::Repeat:
+            break;
+    }
+    return TextureOpt::WrapPeriodic;
+}
+
+// The cache's name of an image: unique per image, with the extension its bytes call for, so
+// that OpenImageIO picks the reader by name (PNG and JPEG by their signatures; otherwise the
+// source's own extension).
+std::string cache_name(const ImageSource& source, size_t index) {
+    std::string extension;
+    const std::string& b = source.bytes;
+    if (b.size() >= 8 && std::memcmp(b.data(), "\x89PNG\r\n\x1a\n", 8) == 0) {
+        extension = ".png";
+    } else if (b.size() >= 3 && std::memcmp(b.data(), "\xFF\xD8\xFF", 3) == 0) {
+        extension = ".jpg";
+    } else {
+        const size_t slash = source.name.find_last_of('/');
+        const size_t dot = source.name.find_last_of('.');
+        if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) {
+            extension = source.name.substr(dot);
+        }
+    }
+    return "rayo-image-" + std::to_string(index) + extension;
+}
+
+// The line "Peak cache memory : 12.3 MB" of OpenImageIO's statistics, in bytes (0 if absent).
+int64_t peak_cache_memory(const std::string& statistics) {
+    const std::string key = "Peak cache memory :";
+    const size_t at = statistics.find(key);
+    if (at == std::string::npos) return 0;
+    std::istringstream in(statistics.substr(at + key.size()));
+    double value = 0.0;
+    std::string unit;
+    in >> value >> unit;
+    const double scale = unit == "KB"   ? 1024.0
+                         : unit == "MB" ? 1024.0 * 1024.0
+                         : unit == "GB" ? 1024.0 * 1024.0 * 1024.0
+                                        : 1.0;
+    return static_cast<int64_t>(value * scale);
+}
+
+}  // namespace
+
+float srgb_to_linear(float encoded) {
+    // IEC 61966-2-1: the linear toe below 0.04045, the 2.4 power above.
+    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+bool image_source_readable(const ImageSource& source, std::string& error) {
+    OIIO::Filesystem::IOMemReader memory(source.bytes.data(), source.bytes.size());
+    OIIO::ImageSpec config;
+    void* proxy = &memory;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    auto input = OIIO::ImageInput::open(cache_name(source, 0), &config);
+    if (!input) {
+        error = OIIO::geterror();
+        if (error.empty()) error = "not an image OpenImageIO can read";
+        return false;
+    }
+    input->close();
+    return true;
+}
+
+struct ImageTextures::Impl {
+    // One image in the cache: its bytes read through an in-memory proxy that lives as long as
+    // the texture system (the cache may reopen it).
+    struct Entry {
+        std::shared_ptr<const ImageSource> source;
+        std::unique_ptr<OIIO::Filesystem::IOMemReader> proxy;
+        OIIO::TextureSystem::TextureHandle* handle = nullptr;
+        bool floating = false;
+    };
+    // One material's use of an image.
+    struct Use {
+        OIIO::TextureSystem::TextureHandle* handle = nullptr;
+        TextureOpt options;
+        bool srgb = false;
+        glm::mat3 transform{1.0f};
+    };
+
+    OIIO::TextureSystem* system = nullptr;
+    float limit_mb = 0.0f;
+    std::vector<Entry> entries;
+    std::map<const ImageSource*, size_t> index_of;
+    std::vector<std::array<Use, 3>> uses;  // per material, per Slot
+
+    size_t add(const std::shared_ptr<const ImageSource>& source) {
+        const auto found = index_of.find(source.get());
+        if (found != index_of.end()) return found->second;
+        Entry entry;
+        entry.source = source;
+        entry.proxy = std::make_unique<OIIO::Filesystem::IOMemReader>(source->bytes.data(),
+                                                                      source->bytes.size());
+        const OIIO::ustring name(cache_name(*source, entries.size()));
+        OIIO::ImageSpec config;
+        void* proxy = entry.proxy.get();
+        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        system->imagecache()->add_file(name, nullptr, &config);
+        entry.handle = system->get_texture_handle(name);
+        const OIIO::ImageSpec* spec = system->imagespec(entry.handle, nullptr);
+        entry.floating = spec != nullptr && spec->format.is_floating_point();
+        index_of.emplace(source.get(), entries.size());
+        entries.push_back(std::move(entry));
+        return entries.size() - 1;
+    }
+
+    Use use_of(const ImageMap& map) {
+        Use use;
+        if (!map.used()) return use;
+        const Entry& entry = entries[add(map.image)];
+        if (!system->good(entry.handle)) return use;  // unreadable: the loaders warned
+        use.handle = entry.handle;
+        use.options.swrap = oiio_wrap(map.wrap_s);
+        use.options.twrap = oiio_wrap(map.wrap_t);
+        use.options.fill = 1.0f;  // alpha of images without one
+        use.srgb = map.encoding == TextureEncoding::Srgb ||
+                   (map.encoding == TextureEncoding::Auto && !entry.floating);
+        use.transform = map.transform;
+        return use;
+    }
+};
+
+ImageTextures::ImageTextures(const std::vector<Material>& materials, float max_memory_mb)
+    : m_impl(std::make_unique<Impl>()) {
+    Impl& impl = *m_impl;
+    // A private system: its cache limit and statistics are this render's.
+    impl.system = OIIO::TextureSystem::create(/*shared=*/false);
+    impl.limit_mb = max_memory_mb;
+    impl.system->attribute("max_memory_MB", max_memory_mb);
+    // PNG and JPEG are scanline images: cut them into 64² tiles so that the memory limit
+    // bounds what is held, and build their MIP levels in the cache (filtered minification).
+    impl.system->attribute("autotile", 64);
+    impl.system->attribute("automip", 1);
+    impl.system->attribute("gray_to_rgb", 1);
+    impl.uses.resize(materials.size());
+    for (size_t m = 0; m < materials.size(); ++m) {
+        const MaterialImages& images = materials[m].images;
+        impl.uses[m][static_cast<size_t>(Slot::Base)] = impl.use_of(images.base);
+        impl.uses[m][static_cast<size_t>(Slot::Specular)] = impl.use_of(images.specular);
+        impl.uses[m][static_cast<size_t>(Slot::Emission)] = impl.use_of(images.emission);
+    }
+}
+
+ImageTextures::~ImageTextures() {
+    if (m_impl->system) OIIO::TextureSystem::destroy(m_impl->system);
+}
+
+bool ImageTextures::has(uint32_t material, Slot slot) const {
+    return material < m_impl->uses.size() &&
+           m_impl->uses[material][static_cast<size_t>(slot)].handle != nullptr;
+}
+
+glm::vec4 ImageTextures::lookup(uint32_t material, Slot slot, const glm::vec2& uv,
+                                float width) const {
+    const Impl::Use& use = m_impl->uses[material][static_cast<size_t>(slot)];
+    if (use.handle == nullptr) return glm::vec4(1.0f);
+    const glm::vec3 st = use.transform * glm::vec3(uv, 1.0f);
+    // The footprint's axes through the transform (its linear part scales and rotates them).
+    const glm::vec2 dx = glm::vec2(use.transform * glm::vec3(width, 0.0f, 0.0f));
+    const glm::vec2 dy = glm::vec2(use.transform * glm::vec3(0.0f, width, 0.0f));
+    TextureOpt options = use.options;
+    float texel[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+    m_impl->system->texture(use.handle, m_impl->system->get_perthread_info(), options, st.x, st.y,
+                            dx.x, dx.y, dy.x, dy.y, 4, texel);
+    if (use.srgb) {
+        for (int c = 0; c < 3; ++c) texel[c] = srgb_to_linear(texel[c]);
+    }
+    return glm::vec4(texel[0], texel[1], texel[2], texel[3]);
+}
+
+size_t ImageTextures::texture_count() const {
+    return m_impl->entries.size();
+}
+
+ImageTextureStats ImageTextures::stats() const {
+    ImageTextureStats out;
+    out.textures = m_impl->entries.size();
+    out.limit_mb = m_impl->limit_mb;
+    for (const auto& entry : m_impl->entries) {
+        out.encoded_bytes += static_cast<int64_t>(entry.source->bytes.size());
+    }
+    OIIO::ImageCache* cache = m_impl->system->imagecache();
+    int64_t value = 0;
+    if (cache->getattribute("stat:cache_memory_used", OIIO::TypeDesc::INT64, &value)) {
+        out.memory_used = value;
+    }
+    if (cache->getattribute("stat:image_size", OIIO::TypeDesc::INT64, &value)) {
+        out.image_bytes = value;
+    }
+    // OpenImageIO prints its peak rounded (and counts pixel memory only): never below what
+    // the cache holds now.
+    out.memory_peak = std::max(peak_cache_memory(cache->getstats(1)), out.memory_used);
+    return out;
+}
+
+}  // namespace rayo

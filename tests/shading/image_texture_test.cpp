@@ -1,0 +1,129 @@
+// The render's texture system (shading/image_texture.h): sRGB decoding, wrap modes, the images
+// shared by materials counted once, the texture transform, the cache's statistics. Images are
+// PNGs made in memory by the test (OpenImageIO ImageOutput through a file it removes).
+#include "shading/image_texture.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "shading/material.h"
+
+namespace rayo {
+namespace {
+
+// A 64×8 PNG: the left half byte `left`, the right half byte `right` (grey).
+std::shared_ptr<const ImageSource> halves(unsigned char left, unsigned char right) {
+    const int w = 64, h = 8;
+    std::vector<unsigned char> pixels(w * h);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) pixels[y * w + x] = x < w / 2 ? left : right;
+    }
+    const std::string path = "/tmp/rayo_image_texture_test_" + std::to_string(::getpid()) + ".png";
+    auto out = OIIO::ImageOutput::create(path);
+    EXPECT_TRUE(out && out->open(path, OIIO::ImageSpec(w, h, 1, OIIO::TypeDesc::UINT8)));
+    out->write_image(OIIO::TypeDesc::UINT8, pixels.data());
+    out->close();
+    std::ifstream file(path, std::ios::binary);
+    std::stringstream bytes;
+    bytes << file.rdbuf();
+    std::remove(path.c_str());
+    auto source = std::make_shared<ImageSource>();
+    source->name = "halves.png";
+    source->bytes = bytes.str();
+    return source;
+}
+
+Material textured(const std::shared_ptr<const ImageSource>& image, TextureWrap wrap,
+                  TextureEncoding encoding = TextureEncoding::Auto) {
+    Material m;
+    m.images.base.image = image;
+    m.images.base.wrap_s = m.images.base.wrap_t = wrap;
+    m.images.base.encoding = encoding;
+    return m;
+}
+
+float red_at(const ImageTextures& t, uint32_t material, float s) {
+    return t.lookup(material, ImageTextures::Slot::Base, glm::vec2(s, 0.5f), 0.0f).x;
+}
+
+TEST(ImageTexture, SrgbToLinear) {
+    EXPECT_EQ(srgb_to_linear(0.0f), 0.0f);
+    EXPECT_NEAR(srgb_to_linear(1.0f), 1.0f, 1e-6f);
+    EXPECT_NEAR(srgb_to_linear(0.04045f), 0.04045f / 12.92f, 1e-7f);  // the toe's end
+    EXPECT_NEAR(srgb_to_linear(0.5f), 0.214041f, 1e-6f);
+}
+
+TEST(ImageTexture, EightBitImagesAreDecodedFromSrgbUnlessLinear) {
+    const auto image = halves(128, 128);
+    const std::vector<Material> materials = {
+        textured(image, TextureWrap::Repeat),
+        textured(image, TextureWrap::Repeat, TextureEncoding::Linear)};
+    const ImageTextures t(materials, 16.0f);
+    EXPECT_NEAR(red_at(t, 0, 0.25f), srgb_to_linear(128 / 255.0f), 1e-5f);
+    EXPECT_NEAR(red_at(t, 1, 0.25f), 128 / 255.0f, 1e-5f);
+    // Grey images fill RGB; alpha is 1 where the image has none.
+    const glm::vec4 texel = t.lookup(0, ImageTextures::Slot::Base, glm::vec2(0.25f, 0.5f), 0.0f);
+    EXPECT_EQ(texel.x, texel.z);
+    EXPECT_EQ(texel.w, 1.0f);
+    EXPECT_EQ(t.texture_count(), 1u);  // one image shared by two materials
+}
+
+TEST(ImageTexture, WrapModes) {
+    // Left half 0, right half 1 (linear): at s = −1/4 and s = 7/4, repeat reads 3/4 and 3/4
+    // (right, right), clamp the edges 0 and 1 (left, right), mirror 1/4 and 1/4 (left, left).
+    const auto image = halves(0, 255);
+    const std::vector<Material> materials = {textured(image, TextureWrap::Repeat),
+                                             textured(image, TextureWrap::Clamp),
+                                             textured(image, TextureWrap::Mirror)};
+    const ImageTextures t(materials, 16.0f);
+    EXPECT_NEAR(red_at(t, 0, -0.25f), 1.0f, 1e-5f);
+    EXPECT_NEAR(red_at(t, 0, 1.75f), 1.0f, 1e-5f);
+    EXPECT_NEAR(red_at(t, 1, -0.25f), 0.0f, 1e-5f);
+    EXPECT_NEAR(red_at(t, 1, 1.75f), 1.0f, 1e-5f);
+    EXPECT_NEAR(red_at(t, 2, -0.25f), 0.0f, 1e-5f);
+    EXPECT_NEAR(red_at(t, 2, 1.75f), 0.0f, 1e-5f);
+}
+
+TEST(ImageTexture, TransformAppliesBeforeTheLookup) {
+    Material m = textured(halves(0, 255), TextureWrap::Clamp);
+    m.images.base.transform = glm::mat3(0.5f, 0, 0, 0, 1, 0, 0.5f, 0, 1);  // s = u/2 + 1/2
+    const ImageTextures t({m}, 16.0f);
+    EXPECT_NEAR(red_at(t, 0, 0.1f), 1.0f, 1e-5f);  // s = 0.55: the right half
+}
+
+TEST(ImageTexture, MaterialsWithoutImagesHaveNone) {
+    const ImageTextures t({Material{}}, 16.0f);
+    EXPECT_FALSE(t.has(0, ImageTextures::Slot::Base));
+    EXPECT_FALSE(t.has(1, ImageTextures::Slot::Base));  // past the table
+    EXPECT_EQ(t.texture_count(), 0u);
+}
+
+TEST(ImageTexture, UnreadableBytesAreReported) {
+    ImageSource junk;
+    junk.name = "junk.png";
+    junk.bytes = "hello";
+    std::string error;
+    EXPECT_FALSE(image_source_readable(junk, error));
+    EXPECT_FALSE(error.empty());
+    EXPECT_TRUE(image_source_readable(*halves(1, 2), error));
+}
+
+TEST(ImageTexture, StatisticsCountTheCache) {
+    const ImageTextures t({textured(halves(10, 20), TextureWrap::Repeat)}, 32.0f);
+    red_at(t, 0, 0.5f);
+    const ImageTextureStats s = t.stats();
+    EXPECT_EQ(s.textures, 1u);
+    EXPECT_EQ(s.limit_mb, 32.0f);
+    EXPECT_GT(s.memory_used, 0);
+    EXPECT_GT(s.encoded_bytes, 0);
+}
+
+}  // namespace
+}  // namespace rayo
