@@ -3,6 +3,7 @@
 // local model with a shadow ray per light, plus recursive mirror reflection and Snell
 // refraction, total internal reflection going to the reflected ray.
 #include <optional>
+#include <vector>
 
 #include "core/accel.h"
 #include "core/stats.h"
@@ -26,6 +27,26 @@ struct WhittedSettings {
     // (core/shadow_terminator.h; "render.shadow_terminator": "offset"), or on the flat triangle
     // ("none": the stair-step terminator of coarse meshes, kept for comparison).
     bool terminator_offset = true;
+    // The coherent path (radiance_coherent) traces each depth's reflected and refracted rays as
+    // Embree streams too (true) or one at a time (false). Their shadow rays are streams either way.
+    bool stream_secondary = true;
+};
+
+// The rays of the coherent path's stream calls, call by call, by kind: what
+// bench/stream_kinds_bench.cpp replays through rayo and through raw Embree. For one thread.
+struct StreamLog {
+    struct Calls {
+        std::vector<Ray> rays;
+        std::vector<int> sizes;  // rays per stream call, in order
+        void add(const Ray* batch, int count) {
+            rays.insert(rays.end(), batch, batch + count);
+            sizes.push_back(count);
+        }
+    };
+    Calls camera;            // closest hit, coherent
+    Calls shadow_camera;     // occlusion from the camera rays' hits, coherent
+    Calls shadow_secondary;  // occlusion from the reflected and refracted rays' hits, incoherent
+    Calls secondary;         // closest hit of the reflected and refracted rays, incoherent
 };
 
 class WhittedIntegrator {
@@ -41,8 +62,11 @@ class WhittedIntegrator {
     // Radiance arriving along `ray` (a camera ray: counts it as such).
     Vec3 radiance(const Ray& ray, RayCounters& counters) const;
     // The same for a batch of coherent camera rays (a tile's): identical values ray by ray,
-    // with the camera and shadow rays traced as Embree streams.
+    // traced as a wavefront over the ray tree: each depth's rays, then their shadow rays toward
+    // each light sample, as Embree streams (docs/performance.md, "Streams for every ray kind").
     void radiance_coherent(const Ray* rays, int count, Vec3* radiance, RayCounters& counters) const;
+    // Records the stream calls of radiance_coherent into `log` (null: stops); benchmarks only.
+    void record_streams(StreamLog* log) { m_log = log; }
 
   private:
     // What shading a hit needs, computed once: the side the ray arrived on, normals after
@@ -96,6 +120,32 @@ class WhittedIntegrator {
     // `color` (the local model) plus the reflected and refracted children (seed 001).
     Vec3 add_transport(const Ray& ray, const SurfaceHit& hit, const ShadingPoint& p, int depth,
                        const Vec3& weight, const Vec3& color, RayCounters& counters) const;
+    // The children of a hit (seed 001), planned before they are traced so that the wavefront
+    // can trace a whole depth's children together.
+    struct Transport {
+        bool children = false;                   // false: the hit's colour is its local model alone
+        bool reflect = false, transmit = false;  // which child rays are traced
+        Vec3 reflect_weight{0.0f}, transmit_weight{0.0f};
+        Ray reflect_ray, transmit_ray;
+        Vec3 reflect_child_weight{0.0f}, transmit_child_weight{0.0f};
+        const SurfaceCoefficients* reflect_medium = nullptr;
+        const SurfaceCoefficients* transmit_medium = nullptr;
+    };
+    Transport plan_transport(const Ray& ray, const SurfaceHit& hit, const ShadingPoint& p,
+                             int depth, const Vec3& weight, RayCounters& counters) const;
+    // The local `color` plus the children's radiance weighted (add_transport's sum).
+    static Vec3 combine_transport(const Vec3& color, const Transport& t, const Vec3& reflected,
+                                  const Vec3& transmitted);
+    // The radiance arriving along `ray` from its hit (or its miss), given the hit's shaded colour
+    // (trace's last step).
+    Vec3 arriving(const Ray& ray, const SurfaceHit* hit, const Vec3& shaded,
+                  const SurfaceCoefficients* medium) const;
+    struct PathNode;
+    // The wavefront's steps over the nodes [begin, end) of one depth: closest hits, then the
+    // local model with the shadow rays of every light sample as streams.
+    void intersect_level(std::vector<PathNode>& nodes, size_t begin, size_t end) const;
+    void shade_level(std::vector<PathNode>& nodes, size_t begin, size_t end,
+                     RayCounters& counters) const;
 
     Vec3 trace(const Ray& ray, int depth, const Vec3& weight, RayCounters& counters,
                const SurfaceCoefficients* medium) const;
@@ -109,6 +159,7 @@ class WhittedIntegrator {
     const ShadingScene& m_scene;
     WhittedSettings m_settings;
     const RadiosityField* m_radiosity;
+    StreamLog* m_log = nullptr;
 };
 
 // Origin of a ray leaving `hit` on the side `side_normal` points to: offset along the
