@@ -2,18 +2,18 @@
 // The rays are recorded from a render of an SPD scene that rayo generates (balls 3 by default,
 // bench/lab/spd_scenes.h; RAYO_STREAM_SCENE=name:size picks another) at 512×512: every stream
 // call the integrator makes (WhittedIntegrator::record_streams), replayed call by call with the
-// same batch sizes and Embree context flags, the calls shared over 2 threads.
+// same batch sizes and Embree context flags, on one thread: the rates are per CPU second of that
+// thread, which other processes on a shared machine disturb far less than wall time.
 //   Rayo/<kind>        Accel::intersect_coherent (with the hit record) / occluded_coherent
+//   RayoSingle/<kind>  Accel::intersect / occluded ray by ray (the --single-rays path)
 //   RawStream/<kind>   rtcIntersect1M / rtcOccluded1M on the same calls, nothing else
 //   RawPacket/<kind>   rtcIntersect16 / rtcOccluded16 packets of the same rays (the alternative)
 //   RawSingle/<kind>   rtcIntersect1 / rtcOccluded1 ray by ray (the single-ray ceiling)
 // kind: 0 camera, 1 shadow from camera hits, 2 shadow from secondary hits, 3 reflected and
-// refracted. Counters: Mrays/s (rays per wall-clock second).
+// refracted (RAYO_STREAM_COHERENT=1: all with the COHERENT flag, for comparison). Counters: Mrays/s
+// (rays per CPU second).
 #include <benchmark/benchmark.h>
-#include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 
-#include <atomic>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -32,7 +32,6 @@ namespace rayo {
 namespace {
 
 constexpr int kSize = 512;
-constexpr int kThreads = 2;
 const char* const kKindNames[] = {"camera", "shadow-camera", "shadow-secondary", "secondary"};
 
 struct Recording {
@@ -47,8 +46,11 @@ struct Recording {
         return *all[kind];
     }
     static bool closest_hit(int kind) { return kind == 0 || kind == 3; }
+    // The renderer's flags; RAYO_STREAM_COHERENT=1 replays every kind with the COHERENT flag.
     static Accel::Coherence coherence(int kind) {
-        return kind <= 1 ? Accel::Coherence::Coherent : Accel::Coherence::Incoherent;
+        static const bool all_coherent = std::getenv("RAYO_STREAM_COHERENT") != nullptr;
+        return kind <= 1 || all_coherent ? Accel::Coherence::Coherent
+                                         : Accel::Coherence::Incoherent;
     }
 };
 
@@ -102,26 +104,18 @@ const Recording& recording() {
 }
 
 // Replays every recorded call of `kind` through `trace_call(rays, n)` (which returns how many
-// rays hit or are occluded), the calls shared over kThreads threads.
+// rays hit or are occluded), on one thread.
 template <typename TraceCall>
 void replay(benchmark::State& state, TraceCall trace_call) {
     const Recording& rec = recording();
     const int kind = static_cast<int>(state.range(0));
     const StreamLog::Calls& calls = rec.calls(kind);
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, kThreads);
     size_t hits = 0;
     for (auto _ : state) {
-        std::atomic<size_t> frame_hits{0};
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, calls.sizes.size(), 16),
-                          [&](const tbb::blocked_range<size_t>& r) {
-                              size_t local = 0;
-                              for (size_t c = r.begin(); c < r.end(); ++c) {
-                                  local += trace_call(calls.rays.data() + rec.offsets[kind][c],
-                                                      calls.sizes[c], kind);
-                              }
-                              frame_hits += local;
-                          });
-        hits = frame_hits;
+        hits = 0;
+        for (size_t c = 0; c < calls.sizes.size(); ++c) {
+            hits += trace_call(calls.rays.data() + rec.offsets[kind][c], calls.sizes[c], kind);
+        }
     }
     state.SetLabel(kKindNames[kind]);
     state.counters["Mrays/s"] =
@@ -178,6 +172,19 @@ void Rayo(benchmark::State& state) {
             accel.occluded_coherent(rays, n, result, Recording::coherence(kind));
         }
         for (int i = 0; i < n; ++i) count += result[i];
+        return count;
+    });
+}
+
+void RayoSingle(benchmark::State& state) {
+    const Accel& accel = *recording().accel;
+    replay(state, [&](const Ray* rays, int n, int kind) {
+        size_t count = 0;
+        for (int i = 0; i < n; ++i) {
+            SurfaceHit hit;
+            count += Recording::closest_hit(kind) ? accel.intersect(rays[i], hit)
+                                                  : accel.occluded(rays[i]);
+        }
         return count;
     });
 }
@@ -267,9 +274,10 @@ void RawSingle(benchmark::State& state) {
 }
 
 void kinds(benchmark::internal::Benchmark* b) {
-    b->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->UseRealTime();
+    b->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 }
 BENCHMARK(Rayo)->Apply(kinds);
+BENCHMARK(RayoSingle)->Apply(kinds);
 BENCHMARK(RawStream)->Apply(kinds);
 BENCHMARK(RawPacket)->Apply(kinds);
 BENCHMARK(RawSingle)->Apply(kinds);

@@ -467,7 +467,8 @@ void WhittedIntegrator::radiance_coherent(const Ray* rays, int count, Vec3* radi
     // radiance is summed back up the tree once every depth is traced, each hit combining its
     // children as add_transport does.
     constexpr int kBatch = Accel::kCoherentBatch;
-    std::vector<PathNode> nodes;
+    // The ray tree's nodes; kept per thread so that its storage is allocated once, not per batch.
+    thread_local std::vector<PathNode> nodes;
     for (int first = 0; first < count; first += kBatch) {
         const int n = std::min(kBatch, count - first);
         nodes.clear();
