@@ -1,9 +1,10 @@
 // Each ray kind of the coherent path through rayo's Accel against raw Embree on the same rays.
 // The rays are recorded from a render of an SPD scene that rayo generates (balls 3 by default,
 // bench/lab/spd_scenes.h; RAYO_STREAM_SCENE=name:size picks another) at 512×512: every stream
-// call the integrator makes (WhittedIntegrator::record_streams), replayed call by call with the
-// same batch sizes and Embree context flags, on one thread: the rates are per CPU second of that
-// thread, which other processes on a shared machine disturb far less than wall time.
+// call the integrator makes with stream_secondary (WhittedIntegrator::record_streams), replayed
+// call by call with the same batch sizes and Embree context flags, on one thread: the rates are per
+// CPU second of that thread, which other processes on a shared machine disturb far less than wall
+// time.
 //   Rayo/<kind>        Accel::intersect_coherent (with the hit record) / occluded_coherent
 //   RayoSingle/<kind>  Accel::intersect / occluded ray by ray (the --single-rays path)
 //   RawStream/<kind>   rtcIntersect1M / rtcOccluded1M on the same calls, nothing else
@@ -76,8 +77,9 @@ const Recording& recording() {
         options.spheres = spheres.spheres;
         options.sphere_math = spheres.math;
         rec.accel = std::make_unique<Accel>(rec.description.scene, options);
-        WhittedIntegrator integrator(*rec.accel, rec.description.shading,
-                                     rec.description.settings.whitted);
+        WhittedSettings settings = rec.description.settings.whitted;
+        settings.stream_secondary = true;  // the wavefront through every depth
+        WhittedIntegrator integrator(*rec.accel, rec.description.shading, settings);
         integrator.record_streams(&rec.log);
         RayCounters counters;
         Ray rays[64];

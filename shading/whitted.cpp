@@ -373,12 +373,6 @@ void WhittedIntegrator::intersect_level(std::vector<PathNode>& nodes, size_t beg
                                         size_t end) const {
     // Camera rays are coherent; the children scatter (Embree's incoherent stream mode).
     constexpr int kBatch = Accel::kCoherentBatch;
-    if (nodes[begin].depth > 0 && !m_settings.stream_secondary) {
-        for (size_t k = begin; k < end; ++k) {
-            nodes[k].found = m_accel.intersect(nodes[k].ray, nodes[k].hit);
-        }
-        return;
-    }
     const Accel::Coherence coherence =
         nodes[begin].depth == 0 ? Accel::Coherence::Coherent : Accel::Coherence::Incoherent;
     Ray rays[kBatch];
@@ -481,6 +475,13 @@ void WhittedIntegrator::radiance_coherent(const Ray* rays, int count, Vec3* radi
             shade_level(nodes, begin, end, counters);
             for (size_t k = begin; k < end; ++k) {
                 if (!nodes[k].found) continue;
+                if (!m_settings.stream_secondary) {
+                    // The children one ray at a time, recursively (the single-ray path's own).
+                    nodes[k].color =
+                        add_transport(nodes[k].ray, nodes[k].hit, nodes[k].point, nodes[k].depth,
+                                      nodes[k].weight, nodes[k].color, counters);
+                    continue;
+                }
                 // add_transport's children: the refracted one first, as it counts them.
                 Transport t = plan_transport(nodes[k].ray, nodes[k].hit, nodes[k].point,
                                              nodes[k].depth, nodes[k].weight, counters);

@@ -27,9 +27,14 @@ struct WhittedSettings {
     // (core/shadow_terminator.h; "render.shadow_terminator": "offset"), or on the flat triangle
     // ("none": the stair-step terminator of coarse meshes, kept for comparison).
     bool terminator_offset = true;
-    // The coherent path (radiance_coherent) traces each depth's reflected and refracted rays as
-    // Embree streams too (true) or one at a time (false). Their shadow rays are streams either way.
-    bool stream_secondary = true;
+    // The coherent path (radiance_coherent) streams the camera rays and their shadow rays. With
+    // stream_secondary its wavefront goes on past their hits: each depth's reflected and
+    // refracted rays, then their shadow rays, as Embree streams (incoherent mode). That is not
+    // bit-identical to single rays where triangles are hit (Embree's incoherent packet kernels
+    // can report the other triangle at a shared edge: the default scene with mesh:2 spheres) and
+    // not faster (docs/performance.md), so it is off: the recursion from the camera rays' hits
+    // on traces one ray at a time.
+    bool stream_secondary = false;
 };
 
 // The rays of the coherent path's stream calls, call by call, by kind: what
@@ -63,7 +68,8 @@ class WhittedIntegrator {
     Vec3 radiance(const Ray& ray, RayCounters& counters) const;
     // The same for a batch of coherent camera rays (a tile's): identical values ray by ray,
     // traced as a wavefront over the ray tree: each depth's rays, then their shadow rays toward
-    // each light sample, as Embree streams (docs/performance.md, "Streams for every ray kind").
+    // each light sample, as Embree streams (docs/performance.md, "Streams for every ray kind");
+    // without stream_secondary the wavefront stops at the camera rays' hits.
     void radiance_coherent(const Ray* rays, int count, Vec3* radiance, RayCounters& counters) const;
     // Records the stream calls of radiance_coherent into `log` (null: stops); benchmarks only.
     void record_streams(StreamLog* log) { m_log = log; }

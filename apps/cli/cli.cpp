@@ -90,8 +90,8 @@ render options:
                            form (not spheres), over the scene's per-object "method"
                            [each object's, default analytic; docs/shape-methods.md]
   --flat-spheres           mesh:N spheres with flat facets instead of smooth normals
-  --single-rays            trace every ray one by one instead of as Embree streams per tile
-                           and depth (same image; for comparisons)
+  --single-rays            trace camera and shadow rays one by one instead of as coherent
+                           Embree streams per tile (same image; for comparisons)
   --shadow-terminator T    offset (default): shadow rays of smooth-shaded triangles start on
                            the surface their vertex normals imply (Hanika 2021), or none: on
                            the flat triangle (stair-step shadows on coarse meshes)
@@ -558,7 +558,7 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "  sphere method               " << sphere_method_name(r.spheres.spheres) << " ("
         << sphere_math_name(r.spheres.math) << "): " << r.spheres.reason << "\n"
         << "  ray batches                 "
-        << (r.coherent ? "Embree streams per tile and depth (every ray kind)" : "single rays")
+        << (r.coherent ? "coherent Embree streams per tile (camera, shadow)" : "single rays")
         << "\n"
         << "  primitives                  " << r.primitives << " (" << shape_summary(d.scene)
         << ")\n";

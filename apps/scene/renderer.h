@@ -23,7 +23,7 @@ struct RenderResult {
     int threads = 0;
     SphereChoice spheres;                   // the sphere method and math that ran, and why
     std::vector<ShapeMethodChoice> shapes;  // the objects' methods, where not analytic by default
-    bool coherent = false;                  // every ray kind traced as per-tile Embree streams
+    bool coherent = false;                  // camera/shadow rays traced as per-tile Embree streams
     // The radiosity pre-pass, when render.gi is "radiosity" (docs/radiosity.md).
     bool radiosity = false;
     size_t radiosity_patches = 0;

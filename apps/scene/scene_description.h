@@ -29,7 +29,7 @@ struct RenderSettings {
     // --shape-method: the method of every object with a mesh form, over the file's "method"s
     // (apps/scene/shape_method_choice.h); none: each object's own, analytic by default.
     std::optional<ShapeMethod> shape_method;
-    bool coherent = true;  // every ray kind as Embree streams per tile (--single-rays: no)
+    bool coherent = true;  // tiles' camera and shadow rays as Embree streams (--single-rays: no)
     AntiAliasing aa = AntiAliasing::Stratified;  // "aa": stratified spp, or adaptive
     AdaptiveSettings adaptive;                   // "aa_threshold", "aa_depth"
     WhittedSettings whitted;
