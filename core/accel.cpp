@@ -39,6 +39,15 @@ RTCRayHit make_rtc_rayhit(const Ray& ray) {
     return rayhit;
 }
 
+// The context of a stream call: Embree's traversal for coherent or incoherent rays.
+RTCIntersectContext stream_context(Accel::Coherence coherence) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = coherence == Accel::Coherence::Coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                                                            : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    return context;
+}
+
 }  // namespace
 
 namespace {
@@ -158,10 +167,9 @@ bool Accel::intersect(const Ray& ray, SurfaceHit& hit) const {
     return finish_hit(ray, rayhit, hit);
 }
 
-void Accel::intersect_coherent(const Ray* rays, int count, SurfaceHit* hits, bool* found) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+void Accel::intersect_coherent(const Ray* rays, int count, SurfaceHit* hits, bool* found,
+                               Coherence coherence) const {
+    RTCIntersectContext context = stream_context(coherence);
     RTCRayHit batch[kCoherentBatch];
     for (int first = 0; first < count; first += kCoherentBatch) {
         const int n = std::min(kCoherentBatch, count - first);
@@ -173,10 +181,9 @@ void Accel::intersect_coherent(const Ray* rays, int count, SurfaceHit* hits, boo
     }
 }
 
-void Accel::occluded_coherent(const Ray* rays, int count, bool* occluded) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+void Accel::occluded_coherent(const Ray* rays, int count, bool* occluded,
+                              Coherence coherence) const {
+    RTCIntersectContext context = stream_context(coherence);
     RTCRay batch[kCoherentBatch];
     for (int first = 0; first < count; first += kCoherentBatch) {
         const int n = std::min(kCoherentBatch, count - first);

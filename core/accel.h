@@ -35,11 +35,18 @@ class Accel {
     // True when anything lies on the ray within (tnear, tfar).
     bool occluded(const Ray& ray) const;
 
-    // Coherent batches (a tile's camera rays, its shadow rays toward one light) go through
-    // Embree ray streams (rtcIntersect1M/rtcOccluded1M, COHERENT flag), which traverse them as
-    // packets. Ray by ray the results equal intersect()/occluded() (tests/core/accel_test.cpp).
-    void intersect_coherent(const Ray* rays, int count, SurfaceHit* hits, bool* found) const;
-    void occluded_coherent(const Ray* rays, int count, bool* occluded) const;
+    // Batches go through Embree ray streams (rtcIntersect1M/rtcOccluded1M), kCoherentBatch rays
+    // per call. Coherent (a tile's camera rays, their shadow rays toward one light): the
+    // COHERENT context flag, Embree's packet-stream traversal. Incoherent (the rays spawned at
+    // secondary hits): the INCOHERENT flag, occlusion rays sorted by direction octant, closest-hit
+    // rays traced as packets. Ray by ray the results equal intersect()/occluded()
+    // (tests/core/accel_test.cpp), except which of two coplanar overlapping triangles a
+    // closest-hit query reports, which depends on the traversal order.
+    enum class Coherence { Coherent, Incoherent };
+    void intersect_coherent(const Ray* rays, int count, SurfaceHit* hits, bool* found,
+                            Coherence coherence = Coherence::Coherent) const;
+    void occluded_coherent(const Ray* rays, int count, bool* occluded,
+                           Coherence coherence = Coherence::Coherent) const;
     static constexpr int kCoherentBatch = 64;  // rays per stream call (an 8×8 tile)
 
     // Fills hit.uv and hit.dpdu (the shape's parameterization) for a hit this accel returned.

@@ -79,15 +79,19 @@ Vec3 WhittedIntegrator::unoccluded(const Ray& shadow) const {
 Vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const Vec3& weight, RayCounters& counters,
                               const SurfaceCoefficients* medium) const {
     SurfaceHit hit;
-    if (!m_accel.intersect(ray, hit)) {
+    if (!m_accel.intersect(ray, hit)) return arriving(ray, nullptr, Vec3(0.0f), medium);
+    return arriving(ray, &hit, shade(ray, hit, depth, weight, counters, medium), medium);
+}
+
+Vec3 WhittedIntegrator::arriving(const Ray& ray, const SurfaceHit* hit, const Vec3& shaded,
+                                 const SurfaceCoefficients* medium) const {
+    if (!hit) {
         // A miss sees the background, or the pure fog colour (infinite distance, seed 004).
         return through_volumes(
             ray, ray.tfar,
             !medium && m_scene.fog.enabled() ? m_scene.fog.color : m_scene.background);
     }
-    return through_volumes(
-        ray, hit.t,
-        through_medium(shade(ray, hit, depth, weight, counters, medium), hit.t, medium));
+    return through_volumes(ray, hit->t, through_medium(shaded, hit->t, medium));
 }
 
 WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(
@@ -296,135 +300,265 @@ Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth, 
 Vec3 WhittedIntegrator::add_transport(const Ray& ray, const SurfaceHit& hit, const ShadingPoint& p,
                                       int depth, const Vec3& weight, const Vec3& color,
                                       RayCounters& counters) const {
+    const Transport t = plan_transport(ray, hit, p, depth, weight, counters);
+    if (!t.children) return color;
+    Vec3 transmitted(0.0f), reflected(0.0f);
+    if (t.transmit) {
+        transmitted =
+            trace(t.transmit_ray, depth + 1, t.transmit_child_weight, counters, t.transmit_medium);
+    }
+    if (t.reflect) {
+        reflected =
+            trace(t.reflect_ray, depth + 1, t.reflect_child_weight, counters, t.reflect_medium);
+    }
+    return combine_transport(color, t, reflected, transmitted);
+}
+
+WhittedIntegrator::Transport WhittedIntegrator::plan_transport(const Ray& ray,
+                                                               const SurfaceHit& hit,
+                                                               const ShadingPoint& p, int depth,
+                                                               const Vec3& weight,
+                                                               RayCounters& counters) const {
+    Transport t;
     const SurfaceCoefficients& material = p.material();
-    if (!material.reflective() && !material.transmissive()) return color;
+    if (!material.reflective() && !material.transmissive()) return t;
     if (depth >= m_settings.max_depth) {
         ++counters.depth_cut;
-        return color;
+        return t;
     }
+    t.children = true;
 
     // seed 001: perfect specular reflection R = I − 2(I·N)N, and Snell transmission; total
     // internal reflection sends the transmitted weight into the reflected ray.
-    Vec3 reflect_weight = material.reflect;
-    Vec3 transmit_weight = material.transmit;
+    t.reflect_weight = material.reflect;
+    t.transmit_weight = material.transmit;
     const float n21 = p.entering ? material.ior : 1.0f / material.ior;
     if (material.fresnel) {
         // seed 000's W(θ) as the dielectric Fresnel reflectance F: reflect·F and
         // transmit·(1 − F); F = 1 past the critical angle, so nothing is left to transmit.
         const float f = fresnel_reflectance(-glm::dot(ray.direction, p.normal), n21);
-        reflect_weight *= f;
-        transmit_weight *= 1.0f - f;
+        t.reflect_weight *= f;
+        t.transmit_weight *= 1.0f - f;
     }
-    Vec3 transmit_color(0.0f);
-    if (max_component(transmit_weight) > 0.0f) {
+    if (max_component(t.transmit_weight) > 0.0f) {
         const std::optional<Vec3> refracted = refract(ray.direction, p.normal, n21);
         if (refracted) {
-            const Vec3 child_weight = weight * transmit_weight;
+            const Vec3 child_weight = weight * t.transmit_weight;
             if (max_component(child_weight) >= m_settings.min_contribution) {
-                Ray child;
-                child.origin = offset_ray_origin(hit, -p.facing_geometric);
-                child.direction = glm::normalize(*refracted);
+                t.transmit = true;
+                t.transmit_ray.origin = offset_ray_origin(hit, -p.facing_geometric);
+                t.transmit_ray.direction = glm::normalize(*refracted);
+                t.transmit_child_weight = child_weight;
                 ++counters.refraction;
                 // Entering an absorbing object, the child travels inside it (Beer–Lambert);
                 // leaving, or through a material that absorbs nothing (a thin pane, clear
                 // glass), it stays in the space between objects (the fog's).
-                const SurfaceCoefficients* inside =
-                    p.entering && p.base->absorbing() ? p.base : nullptr;
-                transmit_color =
-                    transmit_weight * trace(child, depth + 1, child_weight, counters, inside);
+                t.transmit_medium = p.entering && p.base->absorbing() ? p.base : nullptr;
             } else {
                 ++counters.contribution_cut;
             }
         } else {
             ++counters.total_internal_reflections;
-            reflect_weight += transmit_weight;
+            t.reflect_weight += t.transmit_weight;
         }
     }
-    Vec3 reflect_color(0.0f);
-    if (max_component(reflect_weight) > 0.0f) {
-        const Vec3 child_weight = weight * reflect_weight;
+    if (max_component(t.reflect_weight) > 0.0f) {
+        const Vec3 child_weight = weight * t.reflect_weight;
         if (max_component(child_weight) >= m_settings.min_contribution) {
-            Ray child;
-            child.origin = p.shadow_origin;
-            child.direction = glm::normalize(reflect(ray.direction, p.normal));
+            t.reflect = true;
+            t.reflect_ray.origin = p.shadow_origin;
+            t.reflect_ray.direction = glm::normalize(reflect(ray.direction, p.normal));
+            t.reflect_child_weight = child_weight;
+            t.reflect_medium = p.medium;
             ++counters.reflection;
-            reflect_color =
-                reflect_weight * trace(child, depth + 1, child_weight, counters, p.medium);
         } else {
             ++counters.contribution_cut;
         }
     }
+    return t;
+}
+
+Vec3 WhittedIntegrator::combine_transport(const Vec3& color, const Transport& t,
+                                          const Vec3& reflected, const Vec3& transmitted) {
+    const Vec3 transmit_color = t.transmit ? t.transmit_weight * transmitted : Vec3(0.0f);
+    const Vec3 reflect_color = t.reflect ? t.reflect_weight * reflected : Vec3(0.0f);
     return color + reflect_color + transmit_color;
+}
+
+// One ray of the wavefront's ray tree (radiance_coherent): the ray, what its hit needs for
+// shading, and where its children are.
+struct WhittedIntegrator::PathNode {
+    Ray ray;
+    int depth = 0;
+    Vec3 weight{1.0f};
+    const SurfaceCoefficients* medium = nullptr;
+    bool found = false;
+    SurfaceHit hit;
+    ShadingPoint point;
+    Vec3 color{0.0f};  // the local model
+    Transport transport;
+    int reflect_child = -1, transmit_child = -1;  // indices in the node list
+    Vec3 radiance{0.0f};                          // arriving along `ray`
+};
+
+void WhittedIntegrator::intersect_level(std::vector<PathNode>& nodes, size_t begin,
+                                        size_t end) const {
+    // Camera rays are coherent; the children scatter (Embree's incoherent stream mode).
+    constexpr int kBatch = Accel::kCoherentBatch;
+    const Accel::Coherence coherence =
+        nodes[begin].depth == 0 ? Accel::Coherence::Coherent : Accel::Coherence::Incoherent;
+    Ray rays[kBatch];
+    SurfaceHit hits[kBatch];
+    bool found[kBatch];
+    for (size_t first = begin; first < end; first += kBatch) {
+        const int n = static_cast<int>(std::min<size_t>(kBatch, end - first));
+        for (int i = 0; i < n; ++i) rays[i] = nodes[first + i].ray;
+        m_accel.intersect_coherent(rays, n, hits, found, coherence);
+        if (m_log) (nodes[begin].depth == 0 ? m_log->camera : m_log->secondary).add(rays, n);
+        for (int i = 0; i < n; ++i) {
+            nodes[first + i].found = found[i];
+            if (found[i]) nodes[first + i].hit = hits[i];
+        }
+    }
+}
+
+void WhittedIntegrator::shade_level(std::vector<PathNode>& nodes, size_t begin, size_t end,
+                                    RayCounters& counters) const {
+    for (size_t k = begin; k < end; ++k) {
+        PathNode& node = nodes[k];
+        if (!node.found) continue;
+        node.point = prepare(node.ray, node.hit, node.medium);
+        node.color = ambient_and_emission(node.point);
+    }
+    // The local model's shadow rays (shade), a light sample at a time over the whole depth:
+    // each hit's colour sums its light samples in the same order as shade does.
+    constexpr int kBatch = Accel::kCoherentBatch;
+    const Accel::Coherence coherence =
+        nodes[begin].depth == 0 ? Accel::Coherence::Coherent : Accel::Coherence::Incoherent;
+    Ray shadows[kBatch];
+    Vec3 to_lights[kBatch], light_radiances[kBatch];
+    LightSide sides[kBatch];
+    size_t shadow_node[kBatch];
+    bool occluded[kBatch];
+    const auto flush = [&](int shadow_count) {
+        counters.shadow += static_cast<uint64_t>(shadow_count);
+        if (m_settings.shadows == ShadowMode::Opaque) {
+            m_accel.occluded_coherent(shadows, shadow_count, occluded, coherence);
+            if (m_log) {
+                (nodes[begin].depth == 0 ? m_log->shadow_camera : m_log->shadow_secondary)
+                    .add(shadows, shadow_count);
+            }
+        }
+        for (int j = 0; j < shadow_count; ++j) {
+            // Filtered shadows continue past surfaces ray by ray (shadow_transmittance): each
+            // crossing is a closest-hit query whose next ray depends on the last one's hit.
+            const Vec3 filter = m_settings.shadows == ShadowMode::Opaque
+                                    ? (occluded[j] ? Vec3(0.0f) : unoccluded(shadows[j]))
+                                    : shadow_transmittance(shadows[j], counters);
+            if (filter == Vec3(0.0f)) continue;
+            PathNode& node = nodes[shadow_node[j]];
+            const Vec3 light_color = direct(node.point, sides[j], to_lights[j], light_radiances[j]);
+            node.color += filter == Vec3(1.0f) ? light_color : filter * light_color;
+        }
+    };
+    for (size_t index = 0; index < m_scene.lights.size(); ++index) {
+        const Light& light = m_scene.lights[index];
+        const int samples = light_sample_count(light);
+        for (int s = 0; s < samples; ++s) {
+            int shadow_count = 0;
+            for (size_t k = begin; k < end; ++k) {
+                const PathNode& node = nodes[k];
+                if (!node.found) continue;
+                const int j = shadow_count;
+                sides[j] =
+                    light_sample(node.point, node.hit, light, sample_u(node.hit, index, s, samples),
+                                 shadows[j], to_lights[j], light_radiances[j]);
+                if (sides[j] == LightSide::None) continue;
+                shadow_node[j] = k;
+                if (++shadow_count == kBatch) {
+                    flush(shadow_count);
+                    shadow_count = 0;
+                }
+            }
+            if (shadow_count > 0) flush(shadow_count);
+        }
+    }
 }
 
 void WhittedIntegrator::radiance_coherent(const Ray* rays, int count, Vec3* radiance,
                                           RayCounters& counters) const {
-    // The same arithmetic as radiance() ray by ray, reordered so that each stage's rays go to
-    // Embree together: camera rays, then the shadow rays toward each light (each point of an
-    // area light) in turn.
+    // The same arithmetic as radiance() ray by ray, reordered as a wavefront over the ray tree
+    // of each batch of camera rays: the rays of one depth are traced together, then their
+    // shadow rays light sample by light sample, then their children form the next depth; the
+    // radiance is summed back up the tree once every depth is traced, each hit combining its
+    // children as add_transport does.
     constexpr int kBatch = Accel::kCoherentBatch;
-    SurfaceHit hits[kBatch];
-    bool found[kBatch];
-    ShadingPoint points[kBatch];
-    Vec3 color[kBatch];
-    Ray shadows[kBatch];
-    Vec3 to_lights[kBatch], light_radiances[kBatch];
-    LightSide sides[kBatch];
-    int shadow_pixel[kBatch];
-    bool occluded[kBatch];
+    // The ray tree's nodes; kept per thread so that its storage is allocated once, not per batch.
+    thread_local std::vector<PathNode> nodes;
     for (int first = 0; first < count; first += kBatch) {
         const int n = std::min(kBatch, count - first);
-        const Ray* batch = rays + first;
+        nodes.clear();
+        nodes.resize(static_cast<size_t>(n));
+        for (int i = 0; i < n; ++i) nodes[static_cast<size_t>(i)].ray = rays[first + i];
         counters.camera += static_cast<uint64_t>(n);
-        m_accel.intersect_coherent(batch, n, hits, found);
-        for (int i = 0; i < n; ++i) {
-            if (!found[i]) continue;
-            points[i] = prepare(batch[i], hits[i], nullptr);
-            color[i] = ambient_and_emission(points[i]);
-        }
-        for (size_t index = 0; index < m_scene.lights.size(); ++index) {
-            const Light& light = m_scene.lights[index];
-            const int samples = light_sample_count(light);
-            for (int s = 0; s < samples; ++s) {
-                int shadow_count = 0;
-                for (int i = 0; i < n; ++i) {
-                    if (!found[i]) continue;
-                    const int k = shadow_count;
-                    sides[k] = light_sample(points[i], hits[i], light,
-                                            sample_u(hits[i], index, s, samples), shadows[k],
-                                            to_lights[k], light_radiances[k]);
-                    if (sides[k] == LightSide::None) continue;
-                    shadow_pixel[k] = i;
-                    ++shadow_count;
+        for (size_t begin = 0; begin < nodes.size();) {
+            const size_t end = nodes.size();
+            intersect_level(nodes, begin, end);
+            shade_level(nodes, begin, end, counters);
+            for (size_t k = begin; k < end; ++k) {
+                if (!nodes[k].found) continue;
+                if (!m_settings.stream_secondary) {
+                    // The children one ray at a time, recursively (the single-ray path's own).
+                    nodes[k].color =
+                        add_transport(nodes[k].ray, nodes[k].hit, nodes[k].point, nodes[k].depth,
+                                      nodes[k].weight, nodes[k].color, counters);
+                    continue;
                 }
-                counters.shadow += static_cast<uint64_t>(shadow_count);
-                if (m_settings.shadows == ShadowMode::Opaque) {
-                    m_accel.occluded_coherent(shadows, shadow_count, occluded);
+                // add_transport's children: the refracted one first, as it counts them.
+                Transport t = plan_transport(nodes[k].ray, nodes[k].hit, nodes[k].point,
+                                             nodes[k].depth, nodes[k].weight, counters);
+                const auto spawn = [&](const Ray& ray, const Vec3& weight,
+                                       const SurfaceCoefficients* medium) {
+                    PathNode child;
+                    child.ray = ray;
+                    child.depth = nodes[k].depth + 1;
+                    child.weight = weight;
+                    child.medium = medium;
+                    nodes.push_back(std::move(child));
+                    return static_cast<int>(nodes.size() - 1);
+                };
+                if (t.transmit) {
+                    nodes[k].transmit_child =
+                        spawn(t.transmit_ray, t.transmit_child_weight, t.transmit_medium);
                 }
-                for (int k = 0; k < shadow_count; ++k) {
-                    // Filtered shadows continue past surfaces ray by ray (shadow_transmittance).
-                    const Vec3 filter = m_settings.shadows == ShadowMode::Opaque
-                                            ? (occluded[k] ? Vec3(0.0f) : unoccluded(shadows[k]))
-                                            : shadow_transmittance(shadows[k], counters);
-                    if (filter == Vec3(0.0f)) continue;
-                    const Vec3 light_color =
-                        direct(points[shadow_pixel[k]], sides[k], to_lights[k], light_radiances[k]);
-                    color[shadow_pixel[k]] +=
-                        filter == Vec3(1.0f) ? light_color : filter * light_color;
+                if (t.reflect) {
+                    nodes[k].reflect_child =
+                        spawn(t.reflect_ray, t.reflect_child_weight, t.reflect_medium);
                 }
+                nodes[k].transport = t;
             }
+            begin = end;
         }
-        for (int i = 0; i < n; ++i) {
-            radiance[first + i] =
-                found[i]
-                    ? through_volumes(batch[i], hits[i].t,
-                                      through_medium(add_transport(batch[i], hits[i], points[i], 0,
-                                                                   Vec3(1.0f), color[i], counters),
-                                                     hits[i].t, nullptr))
-                    : through_volumes(
-                          batch[i], batch[i].tfar,
-                          m_scene.fog.enabled() ? m_scene.fog.color : m_scene.background);
+        // Children come after their parents: summing back to front finishes each child first.
+        for (size_t k = nodes.size(); k-- > 0;) {
+            PathNode& node = nodes[k];
+            if (!node.found) {
+                node.radiance = arriving(node.ray, nullptr, Vec3(0.0f), node.medium);
+                continue;
+            }
+            const Vec3 reflected = node.reflect_child >= 0
+                                       ? nodes[static_cast<size_t>(node.reflect_child)].radiance
+                                       : Vec3(0.0f);
+            const Vec3 transmitted = node.transmit_child >= 0
+                                         ? nodes[static_cast<size_t>(node.transmit_child)].radiance
+                                         : Vec3(0.0f);
+            const Vec3 shaded =
+                node.transport.children
+                    ? combine_transport(node.color, node.transport, reflected, transmitted)
+                    : node.color;
+            node.radiance = arriving(node.ray, &node.hit, shaded, node.medium);
         }
+        for (int i = 0; i < n; ++i) radiance[first + i] = nodes[static_cast<size_t>(i)].radiance;
     }
 }
 

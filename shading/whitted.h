@@ -3,6 +3,7 @@
 // local model with a shadow ray per light, plus recursive mirror reflection and Snell
 // refraction, total internal reflection going to the reflected ray.
 #include <optional>
+#include <vector>
 
 #include "core/accel.h"
 #include "core/stats.h"
@@ -30,6 +31,31 @@ struct WhittedSettings {
     // The angle one pixel's samples spread over, radians (the camera's pixel angle / √spp):
     // image textures filter over the footprint pixel_spread·t (docs/textures.md).
     float pixel_spread = 0.0f;
+    // The coherent path (radiance_coherent) streams the camera rays and their shadow rays. With
+    // stream_secondary its wavefront goes on past their hits: each depth's reflected and
+    // refracted rays, then their shadow rays, as Embree streams (incoherent mode). That is not
+    // bit-identical to single rays where triangles are hit (Embree's incoherent packet kernels
+    // can report the other triangle at a shared edge: the default scene with mesh:2 spheres) and
+    // not faster (docs/performance.md), so it is off: the recursion from the camera rays' hits
+    // on traces one ray at a time.
+    bool stream_secondary = false;
+};
+
+// The rays of the coherent path's stream calls, call by call, by kind: what
+// bench/stream_kinds_bench.cpp replays through rayo and through raw Embree. For one thread.
+struct StreamLog {
+    struct Calls {
+        std::vector<Ray> rays;
+        std::vector<int> sizes;  // rays per stream call, in order
+        void add(const Ray* batch, int count) {
+            rays.insert(rays.end(), batch, batch + count);
+            sizes.push_back(count);
+        }
+    };
+    Calls camera;            // closest hit, coherent
+    Calls shadow_camera;     // occlusion from the camera rays' hits, coherent
+    Calls shadow_secondary;  // occlusion from the reflected and refracted rays' hits, incoherent
+    Calls secondary;         // closest hit of the reflected and refracted rays, incoherent
 };
 
 class WhittedIntegrator {
@@ -48,8 +74,12 @@ class WhittedIntegrator {
     // Radiance arriving along `ray` (a camera ray: counts it as such).
     Vec3 radiance(const Ray& ray, RayCounters& counters) const;
     // The same for a batch of coherent camera rays (a tile's): identical values ray by ray,
-    // with the camera and shadow rays traced as Embree streams.
+    // traced as a wavefront over the ray tree: each depth's rays, then their shadow rays toward
+    // each light sample, as Embree streams (docs/performance.md, "Streams for every ray kind");
+    // without stream_secondary the wavefront stops at the camera rays' hits.
     void radiance_coherent(const Ray* rays, int count, Vec3* radiance, RayCounters& counters) const;
+    // Records the stream calls of radiance_coherent into `log` (null: stops); benchmarks only.
+    void record_streams(StreamLog* log) { m_log = log; }
 
   private:
     // What shading a hit needs, computed once: the side the ray arrived on, normals after
@@ -107,6 +137,32 @@ class WhittedIntegrator {
     // `color` (the local model) plus the reflected and refracted children (seed 001).
     Vec3 add_transport(const Ray& ray, const SurfaceHit& hit, const ShadingPoint& p, int depth,
                        const Vec3& weight, const Vec3& color, RayCounters& counters) const;
+    // The children of a hit (seed 001), planned before they are traced so that the wavefront
+    // can trace a whole depth's children together.
+    struct Transport {
+        bool children = false;                   // false: the hit's colour is its local model alone
+        bool reflect = false, transmit = false;  // which child rays are traced
+        Vec3 reflect_weight{0.0f}, transmit_weight{0.0f};
+        Ray reflect_ray, transmit_ray;
+        Vec3 reflect_child_weight{0.0f}, transmit_child_weight{0.0f};
+        const SurfaceCoefficients* reflect_medium = nullptr;
+        const SurfaceCoefficients* transmit_medium = nullptr;
+    };
+    Transport plan_transport(const Ray& ray, const SurfaceHit& hit, const ShadingPoint& p,
+                             int depth, const Vec3& weight, RayCounters& counters) const;
+    // The local `color` plus the children's radiance weighted (add_transport's sum).
+    static Vec3 combine_transport(const Vec3& color, const Transport& t, const Vec3& reflected,
+                                  const Vec3& transmitted);
+    // The radiance arriving along `ray` from its hit (or its miss), given the hit's shaded colour
+    // (trace's last step).
+    Vec3 arriving(const Ray& ray, const SurfaceHit* hit, const Vec3& shaded,
+                  const SurfaceCoefficients* medium) const;
+    struct PathNode;
+    // The wavefront's steps over the nodes [begin, end) of one depth: closest hits, then the
+    // local model with the shadow rays of every light sample as streams.
+    void intersect_level(std::vector<PathNode>& nodes, size_t begin, size_t end) const;
+    void shade_level(std::vector<PathNode>& nodes, size_t begin, size_t end,
+                     RayCounters& counters) const;
 
     Vec3 trace(const Ray& ray, int depth, const Vec3& weight, RayCounters& counters,
                const SurfaceCoefficients* medium) const;
@@ -121,6 +177,7 @@ class WhittedIntegrator {
     WhittedSettings m_settings;
     const RadiosityField* m_radiosity;
     const ImageTextures* m_images;
+    StreamLog* m_log = nullptr;
 };
 
 // Origin of a ray leaving `hit` on the side `side_normal` points to: offset along the

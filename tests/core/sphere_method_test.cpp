@@ -175,7 +175,8 @@ TEST(SphereMethods, DoubleMathMatchesStableOnOrdinaryScenes) {
 }
 
 // Ray streams (intersect_coherent/occluded_coherent) equal the single-ray calls ray by ray for
-// the methods whose kernels are ours or Embree's triangles; batches longer than one stream call.
+// the methods whose kernels are ours or Embree's triangles, in Embree's coherent and incoherent
+// stream modes (the random rays scatter like secondary rays); batches longer than one call.
 TEST(SphereMethods, CoherentBatchesMatchSingleRays) {
     Scene scene = random_spheres(100, 21);
     TriangleMesh floor;
@@ -184,25 +185,29 @@ TEST(SphereMethods, CoherentBatchesMatchSingleRays) {
     scene.meshes.push_back(floor);
     const std::vector<Ray> rays = random_rays(1000, 22);
     for (const char* method : {"user", "bruteforce", "mesh:1"}) {
-        const Accel accel(scene, options_for(method));
-        std::vector<SurfaceHit> hits(rays.size());
-        std::unique_ptr<bool[]> found(new bool[rays.size()]), blocked(new bool[rays.size()]);
-        accel.intersect_coherent(rays.data(), static_cast<int>(rays.size()), hits.data(),
-                                 found.get());
-        accel.occluded_coherent(rays.data(), static_cast<int>(rays.size()), blocked.get());
-        int hit_count = 0;
-        for (size_t i = 0; i < rays.size(); ++i) {
-            SurfaceHit single;
-            ASSERT_EQ(found[i], accel.intersect(rays[i], single)) << method << " ray " << i;
-            ASSERT_EQ(blocked[i], accel.occluded(rays[i])) << method << " ray " << i;
-            if (!found[i]) continue;
-            ++hit_count;
-            EXPECT_EQ(hits[i].t, single.t);
-            EXPECT_EQ(hits[i].position, single.position);
-            EXPECT_EQ(hits[i].shading_normal, single.shading_normal);
-            EXPECT_EQ(hits[i].material, single.material);
+        for (const Accel::Coherence coherence :
+             {Accel::Coherence::Coherent, Accel::Coherence::Incoherent}) {
+            const Accel accel(scene, options_for(method));
+            std::vector<SurfaceHit> hits(rays.size());
+            std::unique_ptr<bool[]> found(new bool[rays.size()]), blocked(new bool[rays.size()]);
+            accel.intersect_coherent(rays.data(), static_cast<int>(rays.size()), hits.data(),
+                                     found.get(), coherence);
+            accel.occluded_coherent(rays.data(), static_cast<int>(rays.size()), blocked.get(),
+                                    coherence);
+            int hit_count = 0;
+            for (size_t i = 0; i < rays.size(); ++i) {
+                SurfaceHit single;
+                ASSERT_EQ(found[i], accel.intersect(rays[i], single)) << method << " ray " << i;
+                ASSERT_EQ(blocked[i], accel.occluded(rays[i])) << method << " ray " << i;
+                if (!found[i]) continue;
+                ++hit_count;
+                EXPECT_EQ(hits[i].t, single.t);
+                EXPECT_EQ(hits[i].position, single.position);
+                EXPECT_EQ(hits[i].shading_normal, single.shading_normal);
+                EXPECT_EQ(hits[i].material, single.material);
+            }
+            EXPECT_GT(hit_count, 500) << method;
         }
-        EXPECT_GT(hit_count, 500) << method;
     }
 }
 

@@ -1,0 +1,290 @@
+// Each ray kind of the coherent path through rayo's Accel against raw Embree on the same rays.
+// The rays are recorded from a render of an SPD scene that rayo generates (balls 3 by default,
+// bench/lab/spd_scenes.h; RAYO_STREAM_SCENE=name:size picks another) at 512×512: every stream
+// call the integrator makes with stream_secondary (WhittedIntegrator::record_streams), replayed
+// call by call with the same batch sizes and Embree context flags, on one thread: the rates are per
+// CPU second of that thread, which other processes on a shared machine disturb far less than wall
+// time.
+//   Rayo/<kind>        Accel::intersect_coherent (with the hit record) / occluded_coherent
+//   RayoSingle/<kind>  Accel::intersect / occluded ray by ray (the --single-rays path)
+//   RawStream/<kind>   rtcIntersect1M / rtcOccluded1M on the same calls, nothing else
+//   RawPacket/<kind>   rtcIntersect16 / rtcOccluded16 packets of the same rays (the alternative)
+//   RawSingle/<kind>   rtcIntersect1 / rtcOccluded1 ray by ray (the single-ray ceiling)
+// kind: 0 camera, 1 shadow from camera hits, 2 shadow from secondary hits, 3 reflected and
+// refracted (RAYO_STREAM_COHERENT=1: all with the COHERENT flag, for comparison). Counters: Mrays/s
+// (rays per CPU second).
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/scene/renderer.h"
+#include "apps/scene/sphere_method_choice.h"
+#include "bench/bench_main.h"
+#include "bench/lab/spd_scenes.h"
+#include "core/accel.h"
+#include "core/camera.h"
+#include "core/render.h"
+#include "shading/whitted.h"
+
+namespace rayo {
+namespace {
+
+constexpr int kSize = 512;
+const char* const kKindNames[] = {"camera", "shadow-camera", "shadow-secondary", "secondary"};
+
+struct Recording {
+    SceneDescription description;
+    std::unique_ptr<Accel> accel;
+    StreamLog log;
+    std::vector<size_t> offsets[4];  // first ray of each call, per kind
+
+    const StreamLog::Calls& calls(int kind) const {
+        const StreamLog::Calls* all[] = {&log.camera, &log.shadow_camera, &log.shadow_secondary,
+                                         &log.secondary};
+        return *all[kind];
+    }
+    static bool closest_hit(int kind) { return kind == 0 || kind == 3; }
+    // The renderer's flags; RAYO_STREAM_COHERENT=1 replays every kind with the COHERENT flag.
+    static Accel::Coherence coherence(int kind) {
+        static const bool all_coherent = std::getenv("RAYO_STREAM_COHERENT") != nullptr;
+        return kind <= 1 || all_coherent ? Accel::Coherence::Coherent
+                                         : Accel::Coherence::Incoherent;
+    }
+};
+
+// Renders the scene once, one thread, through the coherent path with a stream log: the camera
+// rays of each 8×8 block (the renderer's 64-ray batches) as the renderer makes them at 1 spp.
+const Recording& recording() {
+    static const Recording r = [] {
+        Recording rec;
+        std::string name = "balls";
+        int size = 3;
+        if (const char* env = std::getenv("RAYO_STREAM_SCENE")) {
+            const std::string spec = env;
+            const size_t colon = spec.find(':');
+            name = spec.substr(0, colon);
+            if (colon != std::string::npos) size = std::stoi(spec.substr(colon + 1));
+        }
+        rec.description = spd_scene(name, size);
+        rec.description.scene.camera.width = kSize;
+        rec.description.scene.camera.height = kSize;
+        const Camera camera = Camera::create(rec.description.scene.camera);
+        const SphereChoice spheres = choose_sphere_method(rec.description, camera);
+        AccelOptions options;
+        options.spheres = spheres.spheres;
+        options.sphere_math = spheres.math;
+        rec.accel = std::make_unique<Accel>(rec.description.scene, options);
+        WhittedSettings settings = rec.description.settings.whitted;
+        settings.stream_secondary = true;  // the wavefront through every depth
+        WhittedIntegrator integrator(*rec.accel, rec.description.shading, settings);
+        integrator.record_streams(&rec.log);
+        RayCounters counters;
+        Ray rays[64];
+        Vec3 radiance[64];
+        for (int by = 0; by < kSize; by += 8) {
+            for (int bx = 0; bx < kSize; bx += 8) {
+                int n = 0;
+                for (int y = by; y < by + 8; ++y) {
+                    for (int x = bx; x < bx + 8; ++x) n += pixel_ray(camera, x, y, 0, 1, rays[n]);
+                }
+                integrator.radiance_coherent(rays, n, radiance, counters);
+            }
+        }
+        for (int kind = 0; kind < 4; ++kind) {
+            size_t offset = 0;
+            for (const int n : rec.calls(kind).sizes) {
+                rec.offsets[kind].push_back(offset);
+                offset += static_cast<size_t>(n);
+            }
+        }
+        return rec;
+    }();
+    return r;
+}
+
+// Replays every recorded call of `kind` through `trace_call(rays, n)` (which returns how many
+// rays hit or are occluded), on one thread.
+template <typename TraceCall>
+void replay(benchmark::State& state, TraceCall trace_call) {
+    const Recording& rec = recording();
+    const int kind = static_cast<int>(state.range(0));
+    const StreamLog::Calls& calls = rec.calls(kind);
+    size_t hits = 0;
+    for (auto _ : state) {
+        hits = 0;
+        for (size_t c = 0; c < calls.sizes.size(); ++c) {
+            hits += trace_call(calls.rays.data() + rec.offsets[kind][c], calls.sizes[c], kind);
+        }
+    }
+    state.SetLabel(kKindNames[kind]);
+    state.counters["Mrays/s"] =
+        benchmark::Counter(static_cast<double>(calls.rays.size()) * state.iterations() / 1e6,
+                           benchmark::Counter::kIsRate);
+    state.counters["rays"] = static_cast<double>(calls.rays.size());
+    state.counters["hit%"] = 100.0 * static_cast<double>(hits) / calls.rays.size();
+}
+
+RTCRay to_rtc(const Ray& ray) {
+    RTCRay r;
+    r.org_x = ray.origin.x;
+    r.org_y = ray.origin.y;
+    r.org_z = ray.origin.z;
+    r.dir_x = ray.direction.x;
+    r.dir_y = ray.direction.y;
+    r.dir_z = ray.direction.z;
+    r.tnear = ray.tnear;
+    r.tfar = ray.tfar;
+    r.time = 0.0f;
+    r.mask = 0xFFFFFFFFu;
+    r.id = 0;
+    r.flags = 0;
+    return r;
+}
+
+RTCRayHit to_rtc_hit(const Ray& ray) {
+    RTCRayHit rh;
+    rh.ray = to_rtc(ray);
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    return rh;
+}
+
+RTCIntersectContext context_for(int kind) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = Recording::coherence(kind) == Accel::Coherence::Coherent
+                        ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
+                        : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    return context;
+}
+
+void Rayo(benchmark::State& state) {
+    const Accel& accel = *recording().accel;
+    replay(state, [&](const Ray* rays, int n, int kind) {
+        size_t count = 0;
+        bool result[Accel::kCoherentBatch];
+        if (Recording::closest_hit(kind)) {
+            SurfaceHit hits[Accel::kCoherentBatch];
+            accel.intersect_coherent(rays, n, hits, result, Recording::coherence(kind));
+        } else {
+            accel.occluded_coherent(rays, n, result, Recording::coherence(kind));
+        }
+        for (int i = 0; i < n; ++i) count += result[i];
+        return count;
+    });
+}
+
+void RayoSingle(benchmark::State& state) {
+    const Accel& accel = *recording().accel;
+    replay(state, [&](const Ray* rays, int n, int kind) {
+        size_t count = 0;
+        for (int i = 0; i < n; ++i) {
+            SurfaceHit hit;
+            count += Recording::closest_hit(kind) ? accel.intersect(rays[i], hit)
+                                                  : accel.occluded(rays[i]);
+        }
+        return count;
+    });
+}
+
+void RawStream(benchmark::State& state) {
+    const RTCScene scene = recording().accel->rtc_scene();
+    replay(state, [&](const Ray* rays, int n, int kind) {
+        RTCIntersectContext context = context_for(kind);
+        size_t count = 0;
+        if (Recording::closest_hit(kind)) {
+            RTCRayHit batch[Accel::kCoherentBatch];
+            for (int i = 0; i < n; ++i) batch[i] = to_rtc_hit(rays[i]);
+            rtcIntersect1M(scene, &context, batch, static_cast<unsigned>(n), sizeof(RTCRayHit));
+            for (int i = 0; i < n; ++i) count += batch[i].hit.geomID != RTC_INVALID_GEOMETRY_ID;
+        } else {
+            RTCRay batch[Accel::kCoherentBatch];
+            for (int i = 0; i < n; ++i) batch[i] = to_rtc(rays[i]);
+            rtcOccluded1M(scene, &context, batch, static_cast<unsigned>(n), sizeof(RTCRay));
+            for (int i = 0; i < n; ++i) count += batch[i].tfar < 0.0f;
+        }
+        return count;
+    });
+}
+
+// Packets of 16 in the call's order (SOA), inactive lanes masked off.
+void RawPacket(benchmark::State& state) {
+    const RTCScene scene = recording().accel->rtc_scene();
+    replay(state, [&](const Ray* rays, int n, int kind) {
+        RTCIntersectContext context = context_for(kind);
+        size_t count = 0;
+        for (int first = 0; first < n; first += 16) {
+            alignas(64) int valid[16];
+            alignas(64) RTCRayHit16 packet;
+            for (int i = 0; i < 16; ++i) {
+                const bool active = first + i < n;
+                valid[i] = active ? -1 : 0;
+                const Ray& r = rays[active ? first + i : first];
+                packet.ray.org_x[i] = r.origin.x;
+                packet.ray.org_y[i] = r.origin.y;
+                packet.ray.org_z[i] = r.origin.z;
+                packet.ray.dir_x[i] = r.direction.x;
+                packet.ray.dir_y[i] = r.direction.y;
+                packet.ray.dir_z[i] = r.direction.z;
+                packet.ray.tnear[i] = r.tnear;
+                packet.ray.tfar[i] = r.tfar;
+                packet.ray.time[i] = 0.0f;
+                packet.ray.mask[i] = 0xFFFFFFFFu;
+                packet.ray.id[i] = 0;
+                packet.ray.flags[i] = 0;
+                packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+                packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+            }
+            const int lanes = std::min(16, n - first);
+            if (Recording::closest_hit(kind)) {
+                rtcIntersect16(valid, scene, &context, &packet);
+                for (int i = 0; i < lanes; ++i) {
+                    count += packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
+                }
+            } else {
+                rtcOccluded16(valid, scene, &context, &packet.ray);
+                for (int i = 0; i < lanes; ++i) count += packet.ray.tfar[i] < 0.0f;
+            }
+        }
+        return count;
+    });
+}
+
+void RawSingle(benchmark::State& state) {
+    const RTCScene scene = recording().accel->rtc_scene();
+    replay(state, [&](const Ray* rays, int n, int kind) {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        size_t count = 0;
+        for (int i = 0; i < n; ++i) {
+            if (Recording::closest_hit(kind)) {
+                RTCRayHit rh = to_rtc_hit(rays[i]);
+                rtcIntersect1(scene, &context, &rh);
+                count += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+            } else {
+                RTCRay r = to_rtc(rays[i]);
+                rtcOccluded1(scene, &context, &r);
+                count += r.tfar < 0.0f;
+            }
+        }
+        return count;
+    });
+}
+
+void kinds(benchmark::internal::Benchmark* b) {
+    b->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
+}
+BENCHMARK(Rayo)->Apply(kinds);
+BENCHMARK(RayoSingle)->Apply(kinds);
+BENCHMARK(RawStream)->Apply(kinds);
+BENCHMARK(RawPacket)->Apply(kinds);
+BENCHMARK(RawSingle)->Apply(kinds);
+
+}  // namespace
+}  // namespace rayo
+
+RAYO_BENCHMARK_MAIN()
