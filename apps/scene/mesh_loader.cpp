@@ -652,6 +652,21 @@ std::vector<Vec3> read_vec3(const tinygltf::Model& model, int accessor, const st
     return out;
 }
 
+// Component k of an accessor element: floats as they are, unsigned bytes and shorts normalized
+// to [0, 1] (glTF 2.0, "Accessor data types"; colours and texture coordinates).
+float normalized_component(const unsigned char* element, int component, int k) {
+    if (component == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+        float value;
+        std::memcpy(&value, element + 4 * k, 4);
+        return value;
+    }
+    if (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE)
+        return static_cast<float>(element[k]) / 255.0f;
+    uint16_t value;
+    std::memcpy(&value, element + 2 * k, 2);
+    return static_cast<float>(value) / 65535.0f;
+}
+
 // COLOR_0: VEC3 or VEC4 (alpha ignored) of floats, or of normalized unsigned bytes or shorts
 // (glTF 2.0, "Meshes": the colours are linear).
 std::vector<Vec3> read_colors(const tinygltf::Model& model, int accessor, const std::string& path,
@@ -672,17 +687,7 @@ std::vector<Vec3> read_colors(const tinygltf::Model& model, int accessor, const 
     std::vector<Vec3> out(view.count);
     for (size_t i = 0; i < view.count; ++i) {
         const unsigned char* element = view.data + i * view.stride;
-        for (int k = 0; k < 3; ++k) {
-            if (component == TINYGLTF_COMPONENT_TYPE_FLOAT) {
-                std::memcpy(&out[i][k], element + 4 * k, 4);
-            } else if (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
-                out[i][k] = static_cast<float>(element[k]) / 255.0f;
-            } else {
-                uint16_t value;
-                std::memcpy(&value, element + 2 * k, 2);
-                out[i][k] = static_cast<float>(value) / 65535.0f;
-            }
-        }
+        for (int k = 0; k < 3; ++k) out[i][k] = normalized_component(element, component, k);
         require_colour(out[i], path, what + ": element " + std::to_string(i));
     }
     return out;
@@ -707,17 +712,7 @@ std::vector<glm::vec2> read_texcoords(const tinygltf::Model& model, int accessor
     std::vector<glm::vec2> out(view.count);
     for (size_t i = 0; i < view.count; ++i) {
         const unsigned char* element = view.data + i * view.stride;
-        for (int k = 0; k < 2; ++k) {
-            if (component == TINYGLTF_COMPONENT_TYPE_FLOAT) {
-                std::memcpy(&out[i][k], element + 4 * k, 4);
-            } else if (component == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
-                out[i][k] = static_cast<float>(element[k]) / 255.0f;
-            } else {
-                uint16_t value;
-                std::memcpy(&value, element + 2 * k, 2);
-                out[i][k] = static_cast<float>(value) / 65535.0f;
-            }
-        }
+        for (int k = 0; k < 2; ++k) out[i][k] = normalized_component(element, component, k);
         if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y)) {
             throw InputError(path, what + ": element " + std::to_string(i) + " is not finite");
         }

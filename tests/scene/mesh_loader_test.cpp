@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "tests/scene/scene_test_files.h"
 #include "tests/test_helpers.h"
 
 namespace rayo {
@@ -258,21 +259,7 @@ TEST(MeshLoaderObj, NoTrianglesIsAnError) {
 
 // ---- glTF -----------------------------------------------------------------------------------
 
-std::string base64(const std::vector<uint8_t>& bytes) {
-    static const char* const kAlphabet =
-        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        uint32_t chunk = uint32_t(bytes[i]) << 16;
-        if (i + 1 < bytes.size()) chunk |= uint32_t(bytes[i + 1]) << 8;
-        if (i + 2 < bytes.size()) chunk |= bytes[i + 2];
-        out += kAlphabet[(chunk >> 18) & 63];
-        out += kAlphabet[(chunk >> 12) & 63];
-        out += i + 1 < bytes.size() ? kAlphabet[(chunk >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? kAlphabet[chunk & 63] : '=';
-    }
-    return out;
-}
+using rayo_test::base64;
 
 template <typename T>
 void append_bytes(std::vector<uint8_t>& bin, const std::vector<T>& values) {
