@@ -26,6 +26,7 @@
 #include "bench/lab/spd_scenes.h"
 #include "core/accel.h"
 #include "core/camera.h"
+#include "core/embree_ray.h"
 #include "core/render.h"
 #include "shading/whitted.h"
 
@@ -127,41 +128,6 @@ void replay(benchmark::State& state, TraceCall trace_call) {
     state.counters["hit%"] = 100.0 * static_cast<double>(hits) / calls.rays.size();
 }
 
-RTCRay to_rtc(const Ray& ray) {
-    RTCRay r;
-    r.org_x = ray.origin.x;
-    r.org_y = ray.origin.y;
-    r.org_z = ray.origin.z;
-    r.dir_x = ray.direction.x;
-    r.dir_y = ray.direction.y;
-    r.dir_z = ray.direction.z;
-    r.tnear = ray.tnear;
-    r.tfar = ray.tfar;
-    r.time = 0.0f;
-    r.mask = 0xFFFFFFFFu;
-    r.id = 0;
-    r.flags = 0;
-    return r;
-}
-
-RTCRayHit to_rtc_hit(const Ray& ray) {
-    RTCRayHit rh;
-    rh.ray = to_rtc(ray);
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    return rh;
-}
-
-RTCIntersectContext context_for(int kind) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = Recording::coherence(kind) == Accel::Coherence::Coherent
-                        ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                        : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-    return context;
-}
-
 void Rayo(benchmark::State& state) {
     const Accel& accel = *recording().accel;
     replay(state, [&](const Ray* rays, int n, int kind) {
@@ -194,16 +160,16 @@ void RayoSingle(benchmark::State& state) {
 void RawStream(benchmark::State& state) {
     const RTCScene scene = recording().accel->rtc_scene();
     replay(state, [&](const Ray* rays, int n, int kind) {
-        RTCIntersectContext context = context_for(kind);
+        RTCIntersectContext context = stream_context(Recording::coherence(kind));
         size_t count = 0;
         if (Recording::closest_hit(kind)) {
             RTCRayHit batch[Accel::kCoherentBatch];
-            for (int i = 0; i < n; ++i) batch[i] = to_rtc_hit(rays[i]);
+            for (int i = 0; i < n; ++i) batch[i] = make_rtc_rayhit(rays[i]);
             rtcIntersect1M(scene, &context, batch, static_cast<unsigned>(n), sizeof(RTCRayHit));
             for (int i = 0; i < n; ++i) count += batch[i].hit.geomID != RTC_INVALID_GEOMETRY_ID;
         } else {
             RTCRay batch[Accel::kCoherentBatch];
-            for (int i = 0; i < n; ++i) batch[i] = to_rtc(rays[i]);
+            for (int i = 0; i < n; ++i) batch[i] = make_rtc_ray(rays[i]);
             rtcOccluded1M(scene, &context, batch, static_cast<unsigned>(n), sizeof(RTCRay));
             for (int i = 0; i < n; ++i) count += batch[i].tfar < 0.0f;
         }
@@ -215,7 +181,7 @@ void RawStream(benchmark::State& state) {
 void RawPacket(benchmark::State& state) {
     const RTCScene scene = recording().accel->rtc_scene();
     replay(state, [&](const Ray* rays, int n, int kind) {
-        RTCIntersectContext context = context_for(kind);
+        RTCIntersectContext context = stream_context(Recording::coherence(kind));
         size_t count = 0;
         for (int first = 0; first < n; first += 16) {
             alignas(64) int valid[16];
@@ -262,11 +228,11 @@ void RawSingle(benchmark::State& state) {
         size_t count = 0;
         for (int i = 0; i < n; ++i) {
             if (Recording::closest_hit(kind)) {
-                RTCRayHit rh = to_rtc_hit(rays[i]);
+                RTCRayHit rh = make_rtc_rayhit(rays[i]);
                 rtcIntersect1(scene, &context, &rh);
                 count += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
             } else {
-                RTCRay r = to_rtc(rays[i]);
+                RTCRay r = make_rtc_ray(rays[i]);
                 rtcOccluded1(scene, &context, &r);
                 count += r.tfar < 0.0f;
             }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/embree_device.h"
+#include "core/embree_ray.h"
 #include "core/instance_binding.h"
 #include "core/shapes/height_field_geometry.h"
 #include "core/shapes/mesh_geometry.h"
@@ -11,45 +12,6 @@
 #include "core/user_geometry.h"
 
 namespace rayo {
-namespace {
-
-RTCRay make_rtc_ray(const Ray& ray) {
-    RTCRay r;
-    r.org_x = ray.origin.x;
-    r.org_y = ray.origin.y;
-    r.org_z = ray.origin.z;
-    r.dir_x = ray.direction.x;
-    r.dir_y = ray.direction.y;
-    r.dir_z = ray.direction.z;
-    r.tnear = ray.tnear;
-    r.tfar = ray.tfar;
-    r.time = 0.0f;
-    r.mask = 0xFFFFFFFFu;  // Debian's Embree has ray masks on: mask 0 would hit nothing
-    r.id = 0;
-    r.flags = 0;
-    return r;
-}
-
-RTCRayHit make_rtc_rayhit(const Ray& ray) {
-    RTCRayHit rayhit;
-    rayhit.ray = make_rtc_ray(ray);
-    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
-    rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    return rayhit;
-}
-
-// The context of a stream call: Embree's traversal for coherent or incoherent rays.
-RTCIntersectContext stream_context(Accel::Coherence coherence) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = coherence == Accel::Coherence::Coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                                                            : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
-    return context;
-}
-
-}  // namespace
-
 namespace {
 
 RTCScene new_rtc_scene(const AccelOptions& options) {
