@@ -1,10 +1,5 @@
 #include "shading/image_texture.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imagecache.h>
-#include <OpenImageIO/imageio.h>
-#include <OpenImageIO/texture.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,23 +7,22 @@
 #include <map>
 #include <sstream>
 
+#include "core/image_library.h"
 #include "shading/material.h"
 
 namespace rayo {
 namespace {
 
-using OIIO::TextureOpt;
-
-TextureOpt::Wrap oiio_wrap(TextureWrap wrap) {
+TextureWrapMode wrap_mode(TextureWrap wrap) {
     switch (wrap) {
         case TextureWrap::Clamp:
-            return TextureOpt::WrapClamp;
+            return TextureWrapMode::Clamp;
         case TextureWrap::Mirror:
-            return TextureOpt::WrapMirror;
+            return TextureWrapMode::Mirror;
         case TextureWrap::Repeat:
             break;
     }
-    return TextureOpt::WrapPeriodic;
+    return TextureWrapMode::Periodic;
 }
 
 // The cache's name of an image: unique per image, with the extension its bytes call for, so
@@ -75,58 +69,39 @@ float srgb_to_linear(float encoded) {
 }
 
 bool image_source_readable(const ImageSource& source, std::string& error) {
-    OIIO::Filesystem::IOMemReader memory(source.bytes.data(), source.bytes.size());
-    OIIO::ImageSpec config;
-    void* proxy = &memory;
-    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-    auto input = OIIO::ImageInput::open(cache_name(source, 0), &config);
-    if (!input) {
-        error = OIIO::geterror();
-        if (error.empty()) error = "not an image OpenImageIO can read";
-        return false;
-    }
-    input->close();
-    return true;
+    if (image_library().readable(cache_name(source, 0), source.bytes, error)) return true;
+    if (error.empty()) error = "not an image OpenImageIO can read";
+    return false;
 }
 
 struct ImageTextures::Impl {
-    // One image in the cache: its bytes read through an in-memory proxy that lives as long as
-    // the texture system (the cache may reopen it).
+    // One image in the cache (the module's TextureCache reads its bytes from memory).
     struct Entry {
         std::shared_ptr<const ImageSource> source;
-        std::unique_ptr<OIIO::Filesystem::IOMemReader> proxy;
-        OIIO::TextureSystem::TextureHandle* handle = nullptr;
+        TextureCache::Handle handle = nullptr;
         bool floating = false;
     };
     // One material's use of an image.
     struct Use {
-        OIIO::TextureSystem::TextureHandle* handle = nullptr;
-        TextureOpt options;
+        TextureCache::Handle handle = nullptr;
+        TextureWrapMode swrap = TextureWrapMode::Periodic, twrap = TextureWrapMode::Periodic;
         bool srgb = false;
         glm::mat3 transform{1.0f};
     };
 
-    OIIO::TextureSystem* system = nullptr;
     float limit_mb = 0.0f;
     std::vector<Entry> entries;
     std::map<const ImageSource*, size_t> index_of;
     std::vector<std::array<Use, 3>> uses;  // per material, per Slot
+    std::unique_ptr<TextureCache> system;  // last: destroyed before the bytes it reads
 
     size_t add(const std::shared_ptr<const ImageSource>& source) {
         const auto found = index_of.find(source.get());
         if (found != index_of.end()) return found->second;
         Entry entry;
         entry.source = source;
-        entry.proxy = std::make_unique<OIIO::Filesystem::IOMemReader>(source->bytes.data(),
-                                                                      source->bytes.size());
-        const OIIO::ustring name(cache_name(*source, entries.size()));
-        OIIO::ImageSpec config;
-        void* proxy = entry.proxy.get();
-        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-        system->imagecache()->add_file(name, nullptr, &config);
-        entry.handle = system->get_texture_handle(name);
-        const OIIO::ImageSpec* spec = system->imagespec(entry.handle, nullptr);
-        entry.floating = spec != nullptr && spec->format.is_floating_point();
+        entry.handle = system->add(cache_name(*source, entries.size()), source->bytes);
+        entry.floating = system->floating_point(entry.handle);
         index_of.emplace(source.get(), entries.size());
         entries.push_back(std::move(entry));
         return entries.size() - 1;
@@ -138,9 +113,8 @@ struct ImageTextures::Impl {
         const Entry& entry = entries[add(map.image)];
         if (!system->good(entry.handle)) return use;  // unreadable: the loaders warned
         use.handle = entry.handle;
-        use.options.swrap = oiio_wrap(map.wrap_s);
-        use.options.twrap = oiio_wrap(map.wrap_t);
-        use.options.fill = 1.0f;  // alpha of images without one
+        use.swrap = wrap_mode(map.wrap_s);
+        use.twrap = wrap_mode(map.wrap_t);
         use.srgb = map.encoding == TextureEncoding::Srgb ||
                    (map.encoding == TextureEncoding::Auto && !entry.floating);
         use.transform = map.transform;
@@ -151,15 +125,11 @@ struct ImageTextures::Impl {
 ImageTextures::ImageTextures(const std::vector<Material>& materials, float max_memory_mb)
     : m_impl(std::make_unique<Impl>()) {
     Impl& impl = *m_impl;
-    // A private system: its cache limit and statistics are this render's.
-    impl.system = OIIO::TextureSystem::create(/*shared=*/false);
+    // A private system: its cache limit and statistics are this render's. PNG and JPEG are
+    // scanline images: cut into 64² tiles so that the memory limit bounds what is held, with
+    // their MIP levels built in the cache (filtered minification).
+    impl.system = image_library().create_texture_cache(max_memory_mb, /*autotile=*/64);
     impl.limit_mb = max_memory_mb;
-    impl.system->attribute("max_memory_MB", max_memory_mb);
-    // PNG and JPEG are scanline images: cut them into 64² tiles so that the memory limit
-    // bounds what is held, and build their MIP levels in the cache (filtered minification).
-    impl.system->attribute("autotile", 64);
-    impl.system->attribute("automip", 1);
-    impl.system->attribute("gray_to_rgb", 1);
     impl.uses.resize(materials.size());
     for (size_t m = 0; m < materials.size(); ++m) {
         const MaterialImages& images = materials[m].images;
@@ -169,9 +139,7 @@ ImageTextures::ImageTextures(const std::vector<Material>& materials, float max_m
     }
 }
 
-ImageTextures::~ImageTextures() {
-    if (m_impl->system) OIIO::TextureSystem::destroy(m_impl->system);
-}
+ImageTextures::~ImageTextures() = default;
 
 bool ImageTextures::has(uint32_t material, Slot slot) const {
     return material < m_impl->uses.size() &&
@@ -186,10 +154,10 @@ glm::vec4 ImageTextures::lookup(uint32_t material, Slot slot, const glm::vec2& u
     // The footprint's axes through the transform (its linear part scales and rotates them).
     const glm::vec2 dx = glm::vec2(use.transform * glm::vec3(width, 0.0f, 0.0f));
     const glm::vec2 dy = glm::vec2(use.transform * glm::vec3(0.0f, width, 0.0f));
-    TextureOpt options = use.options;
     float texel[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    m_impl->system->texture(use.handle, m_impl->system->get_perthread_info(), options, st.x, st.y,
-                            dx.x, dx.y, dy.x, dy.y, 4, texel);
+    // fill 1: the alpha of images without one.
+    m_impl->system->lookup(use.handle, use.swrap, use.twrap, /*fill=*/1.0f, st.x, st.y, dx.x, dx.y,
+                           dy.x, dy.y, texel);
     if (use.srgb) {
         for (int c = 0; c < 3; ++c) texel[c] = srgb_to_linear(texel[c]);
     }
@@ -207,17 +175,11 @@ ImageTextureStats ImageTextures::stats() const {
     for (const auto& entry : m_impl->entries) {
         out.encoded_bytes += static_cast<int64_t>(entry.source->bytes.size());
     }
-    OIIO::ImageCache* cache = m_impl->system->imagecache();
-    int64_t value = 0;
-    if (cache->getattribute("stat:cache_memory_used", OIIO::TypeDesc::INT64, &value)) {
-        out.memory_used = value;
-    }
-    if (cache->getattribute("stat:image_size", OIIO::TypeDesc::INT64, &value)) {
-        out.image_bytes = value;
-    }
+    out.memory_used = m_impl->system->memory_used();
+    out.image_bytes = m_impl->system->image_bytes();
     // OpenImageIO prints its peak rounded (and counts pixel memory only): never below what
     // the cache holds now.
-    out.memory_peak = std::max(peak_cache_memory(cache->getstats(1)), out.memory_used);
+    out.memory_peak = std::max(peak_cache_memory(m_impl->system->statistics()), out.memory_used);
     return out;
 }
 

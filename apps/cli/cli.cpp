@@ -37,6 +37,7 @@
 #include "core/image/interrupt_cleanup.h"
 #include "core/image/partial_render.h"
 #include "core/image/tile_stream.h"
+#include "core/image_library.h"
 #include "core/path_util.h"
 #include "core/progress.h"
 #include "core/stop_request.h"
@@ -733,6 +734,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 int render_command(const std::vector<std::string>& arg_list, std::ostream& out, std::ostream& err,
                    std::optional<MpiTileDistribution>& distribution) {
     const RenderArgs args = parse_render_args(arg_list);
+    // Rank 0 writes an image: the image module loads (~0.25 s, docs/performance.md "Fixed
+    // costs") while the scene is parsed and rendered.
+    if (MpiWorld::rank() == 0) preload_image_library();
     const auto total_start = std::chrono::steady_clock::now();
     auto start = total_start;
     SceneDescription d = args.scene_path ? load_scene_file(*args.scene_path, args.load_options)
@@ -998,6 +1002,7 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
                          ")");
     }
     check_film_size(width, height, "--size");
+    preload_image_library();  // for the image written at the end, as for render
     Texture texture = make_texture(*name);
     if (scale) texture.scale = *scale;
     texture.seed = seed;
@@ -1055,6 +1060,7 @@ PreviewArgs parse_preview_args(const std::vector<std::string>& args) {
 int run_preview(const std::vector<std::string>& arg_list, std::ostream& out, std::ostream& err) {
     const PreviewArgs args = parse_preview_args(arg_list);
     const RenderArgs& r = args.render;
+    preload_image_library();  // for the image written at the end, as for render
     const auto total_start = std::chrono::steady_clock::now();
     SceneDescription d =
         r.scene_path ? load_scene_file(*r.scene_path, r.load_options) : make_default_scene();

@@ -1,11 +1,9 @@
 #include "apps/scene/height_image.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include <cmath>
 
 #include "core/error.h"
+#include "core/image_library.h"
 
 namespace rayo {
 
@@ -15,42 +13,29 @@ HeightSamples read_height_image(const std::string& path, const std::string& wher
     const std::string bytes =
         read_input_file(path, where, "height image", kMaxImageFileBytes, access);
     // Decoded from the bytes read above (not reopened by name), when the format can.
-    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
-    auto input = OIIO::ImageInput::create(path);
-    std::unique_ptr<OIIO::ImageInput> in;
     std::string reason;
-    if (input) {
-        if (input->supports("ioproxy")) input->set_ioproxy(&memory);
-        OIIO::ImageSpec spec, config;
-        if (input->open(path, spec, config)) {
-            in = std::move(input);
-        } else {
-            reason = input->geterror();
-        }
-    } else {
-        reason = OIIO::geterror();
-    }
+    const std::unique_ptr<ImageReader> in = image_library().open_reader(path, bytes, reason);
     if (!in) {
         if (reason.empty()) reason = "not an image format OpenImageIO reads";
         throw InputError(where, what + " cannot be read: " + reason);
     }
-    const OIIO::ImageSpec& spec = in->spec();
-    const uint64_t samples = uint64_t(spec.width) * uint64_t(spec.height);
-    if (spec.width < 2 || spec.height < 2 || spec.depth > 1 || samples > kMaxHeightSamples) {
-        throw InputError(where, what + " is " + std::to_string(spec.width) + "x" +
-                                    std::to_string(spec.height) +
+    const int width = in->width(), height = in->height();
+    const uint64_t samples = uint64_t(width) * uint64_t(height);
+    if (width < 2 || height < 2 || in->depth() > 1 || samples > kMaxHeightSamples) {
+        throw InputError(where, what + " is " + std::to_string(width) + "x" +
+                                    std::to_string(height) +
                                     ": expected at least 2x2 and at most " +
                                     std::to_string(kMaxHeightSamples) + " samples");
     }
-    const int channels = spec.nchannels >= 3 ? 3 : 1;
+    const int channels = in->channels() >= 3 ? 3 : 1;
     std::vector<float> pixels(samples * size_t(channels));
     // Integer formats convert to value/max in [0, 1] at their full depth; float stays float.
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data())) {
-        throw InputError(where, what + " cannot be read: " + in->geterror());
+    if (!in->read_floats(channels, pixels.data())) {
+        throw InputError(where, what + " cannot be read: " + in->error());
     }
     HeightSamples out;
-    out.columns = spec.width;
-    out.rows = spec.height;
+    out.columns = width;
+    out.rows = height;
     if (channels == 1) {
         out.values = std::move(pixels);
     } else {

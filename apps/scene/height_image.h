@@ -1,9 +1,10 @@
 #pragma once
-// The samples of a height-field image (docs/heightfields.md), read with OpenImageIO from the
-// bytes of a file that passed the scene's input-file checks (apps/scene/input_file.h: regular
-// file, size limit, --restrict-paths). 8- and 16-bit integer images are read as value/max in
-// [0, 1] (a 16-bit PNG keeps its 16 bits), float images as they are. One or two channels
-// (grey, grey + alpha): the first; three or more: the Rec. 709 luminance of the first three.
+// The samples of a height-field image (docs/heightfields.md), read with OpenImageIO (through the
+// image module, core/image_library.h) from the bytes of a file that passed the scene's
+// input-file checks (apps/scene/input_file.h: regular file, size limit, --restrict-paths). 8- and
+// 16-bit integer images are read as value/max in [0, 1] (a 16-bit PNG keeps its 16 bits), float
+// images as they are. One or two channels (grey, grey + alpha): the first; three or more: the
+// Rec. 709 luminance of the first three.
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -3,7 +3,6 @@
 // temporary file in the target directory and renamed onto the final path.
 #include "core/image/image_output.h"
 
-#include <OpenImageIO/imageio.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -23,6 +22,7 @@
 #include "core/image/atomic_file.h"
 #include "core/image/interrupt_cleanup.h"
 #include "core/image/output_encoding.h"
+#include "core/image_library.h"
 #include "core/path_util.h"
 
 namespace rayo {
@@ -36,8 +36,9 @@ bool file_exists(const char* path) {
 // Writes `pixels` (already in `type`) with `spec` to a temporary file, then renames it onto
 // `path`. On failure the temporary is removed and InputError(path, "cannot write: ...") thrown;
 // while it exists, SIGINT/SIGTERM remove it (core/image/interrupt_cleanup.h).
-void write_atomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
+void write_atomically(const std::string& path, const ImageFileSpec& spec, PixelType type,
                       const void* pixels) {
+    const ImageLibrary& library = image_library();
     const std::string tmp = temporary_path_for(path);
     const TemporaryFileGuard guard(tmp);
     bool ok = false;
@@ -45,23 +46,19 @@ void write_atomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO
     int error = 0;
     {
         errno = 0;
-        std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(tmp);
+        std::unique_ptr<ImageWriter> out = library.create_writer(tmp, spec, reason);
         if (!out) {
             error = errno;
-            reason = OIIO::geterror();
-        } else if (!out->open(tmp, spec)) {
-            error = errno;
-            reason = out->geterror();
         } else {
             ok = out->write_image(type, pixels);
             if (!ok) {
                 error = errno;
-                reason = out->geterror();
+                reason = out->error();
             }
             if (!out->close() && ok) {
                 ok = false;
                 error = errno;
-                reason = out->geterror();
+                reason = out->error();
             }
         }
     }
@@ -142,9 +139,9 @@ void write_image(const Film& film, const std::string& path, const OutputOptions&
     if (film.width() <= 0 || film.height() <= 0)
         throw InputError(path, "cannot write: the image is empty (" + std::to_string(film.width()) +
                                    "x" + std::to_string(film.height()) + ")");
-    const OIIO::ImageSpec spec = image_spec(format, film.width(), film.height(), options);
+    const ImageFileSpec spec = image_spec(format, film.width(), film.height(), options);
     if (format == ImageFormat::Exr) {
-        write_atomically(path, spec, OIIO::TypeDesc::FLOAT, film.rgba().data());
+        write_atomically(path, spec, PixelType::Float, film.rgba().data());
         return;
     }
     // Display formats: the view over a copy of the film (normalized first when asked), then

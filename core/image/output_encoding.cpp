@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "core/error.h"
 #include "core/path_util.h"
@@ -50,44 +51,43 @@ int max_image_side(ImageFormat format) {
     return format == ImageFormat::Jpeg ? 65500 : std::numeric_limits<int>::max();
 }
 
-OIIO::ImageSpec image_spec(ImageFormat format, int width, int height,
-                           const OutputOptions& options) {
-    OIIO::ImageSpec spec;
+ImageFileSpec image_spec(ImageFormat format, int width, int height, const OutputOptions& options) {
+    ImageFileSpec spec;
+    spec.width = width;
+    spec.height = height;
     if (format == ImageFormat::Exr) {
         // Scene-linear, untouched: the film's floats, stored as float or half.
-        spec =
-            OIIO::ImageSpec(width, height, 4,
-                            options.half_float_exr ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+        spec.channels = 4;
+        spec.type = options.half_float_exr ? PixelType::Half : PixelType::Float;
         if (!is_exr_compression(options.exr_compression))
             throw InputError("--exr-compression",
                              "unknown EXR compression '" + options.exr_compression +
                                  "'; expected one of " + exr_compression_names());
-        spec.attribute("compression", options.exr_compression);
+        spec.add("compression", options.exr_compression);
         // Rec.709 primaries and D65 white (x, y pairs: R, G, B, white), the film's space.
-        const float chromaticities[8] = {0.64f, 0.33f, 0.30f,   0.60f,
-                                         0.15f, 0.06f, 0.3127f, 0.3290f};
-        spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), chromaticities);
+        spec.add("chromaticities",
+                 std::vector<float>{0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f});
     } else {
         // JPEG has no alpha channel; PNG and TIFF keep it.
-        const int channels = format == ImageFormat::Jpeg ? 3 : 4;
-        spec = OIIO::ImageSpec(
-            width, height, channels,
-            format == ImageFormat::Tiff ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+        spec.channels = format == ImageFormat::Jpeg ? 3 : 4;
+        spec.type = format == ImageFormat::Tiff ? PixelType::UInt16 : PixelType::UInt8;
         // zlib level 1 and no row filter instead of OIIO's defaults: half the write time, files
         // ~14% larger (docs/performance.md); PNG stays lossless either way.
         if (format == ImageFormat::Png) {
-            spec.attribute("png:compressionLevel", 1);
-            spec.attribute("png:filter", 8);  // PNG_FILTER_NONE: no per-row filter search
+            spec.add("png:compressionLevel", 1);
+            spec.add("png:filter", 8);  // PNG_FILTER_NONE: no per-row filter search
         }
         // Classic TIFF offsets are 32-bit: big images need BigTIFF (docs/high-resolution.md).
-        if (format == ImageFormat::Tiff && spec.image_bytes() >= (static_cast<size_t>(1) << 31))
-            spec.attribute("tiff:bigtiff", 1);
+        const size_t image_bytes = static_cast<size_t>(width) * static_cast<size_t>(height) *
+                                   static_cast<size_t>(spec.channels) * 2;
+        if (format == ImageFormat::Tiff && image_bytes >= (static_cast<size_t>(1) << 31))
+            spec.add("tiff:bigtiff", 1);
         // Display pixels are unassociated already: OpenImageIO must not divide them by alpha.
-        spec.attribute("oiio:UnassociatedAlpha", 1);
+        spec.add("oiio:UnassociatedAlpha", 1);
     }
-    spec.attribute("Software", "rayo " RAYO_VERSION);
+    spec.add("Software", "rayo " RAYO_VERSION);
     for (const auto& [key, value] : options.metadata) {
-        if (!key.empty()) spec.attribute(key, value);
+        if (!key.empty()) spec.add(key, value);
     }
     return spec;
 }
@@ -150,7 +150,7 @@ DisplayEncoder::DisplayEncoder(ImageFormat format, const std::string& where,
       m_display(options.display),
       m_view(options.view),
       m_channels(format == ImageFormat::Jpeg ? 3 : 4),
-      m_type(format == ImageFormat::Tiff ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8) {
+      m_type(format == ImageFormat::Tiff ? PixelType::UInt16 : PixelType::UInt8) {
     const OCIO::ConstConfigRcPtr config = load_ocio_config();
     resolve_display_view(config, where, m_display, m_view);
     try {
@@ -184,7 +184,7 @@ void DisplayEncoder::apply_view(float* rgba, long width, long height) const {
 }
 
 void DisplayEncoder::quantise(const float* rgba, size_t pixels, void* out) const {
-    if (m_type == OIIO::TypeDesc::UINT16) {
+    if (m_type == PixelType::UInt16) {
         quantise_to(rgba, pixels, m_channels, static_cast<uint16_t*>(out));
     } else {
         quantise_to(rgba, pixels, m_channels, static_cast<uint8_t*>(out));

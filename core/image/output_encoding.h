@@ -1,17 +1,17 @@
 #pragma once
 // How rayo encodes an image file, shared by the in-memory writer (core/image/image_output.h) and
 // the streaming one (core/image/tile_stream.h) so that both write the same pixels and metadata:
-// the format from the extension, the OpenImageIO spec of each format, and the display encoding
+// the format from the extension, the file spec of each format, and the display encoding
 // of PNG/TIFF/JPEG (unpremultiply, the OCIO display/view, clamp, quantise). Every step of the
 // display encoding works pixel by pixel, so a tile encodes to the same bytes as the same pixels
 // of the whole image.
 #include <OpenColorIO/OpenColorIO.h>
-#include <OpenImageIO/imageio.h>
 
 #include <cstddef>
 #include <string>
 
 #include "core/image/image_output.h"
+#include "core/image_library.h"
 
 namespace rayo {
 
@@ -26,7 +26,7 @@ int max_image_side(ImageFormat format);
 // The spec rayo writes: EXR scene-linear float or half with chromaticities, the compression of
 // `options` (InputError for an unknown one); PNG/JPEG 8-bit,
 // TIFF 16-bit, display-referred; the metadata of `options` on every format.
-OIIO::ImageSpec image_spec(ImageFormat format, int width, int height, const OutputOptions& options);
+ImageFileSpec image_spec(ImageFormat format, int width, int height, const OutputOptions& options);
 
 // Seed 000 ("Colour"): divides colour by its per-channel maximum over the `pixels` RGBA pixels
 // (non-finite values ignored); the option `--range normalize`.
@@ -41,8 +41,8 @@ class DisplayEncoder {
     DisplayEncoder(ImageFormat format, const std::string& where, const OutputOptions& options);
 
     int channels() const { return m_channels; }  // 3 for JPEG (no alpha), else 4
-    OIIO::TypeDesc type() const { return m_type; }
-    size_t bytes_per_pixel() const { return m_channels * m_type.size(); }
+    PixelType type() const { return m_type; }
+    size_t bytes_per_pixel() const { return m_channels * (m_type == PixelType::UInt16 ? 2 : 1); }
 
     // Unassociates alpha in place (the view must see colour, not colour × coverage).
     static void unpremultiply(float* rgba, size_t pixels);
@@ -54,7 +54,7 @@ class DisplayEncoder {
   private:
     std::string m_where, m_display, m_view;
     int m_channels;
-    OIIO::TypeDesc m_type;
+    PixelType m_type;
     OCIO_NAMESPACE::ConstCPUProcessorRcPtr m_cpu;
 };
 

@@ -1,7 +1,5 @@
 #include "core/image/tile_stream.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -20,6 +18,7 @@
 #include "core/image/atomic_file.h"
 #include "core/image/interrupt_cleanup.h"
 #include "core/image/output_encoding.h"
+#include "core/image_library.h"
 
 namespace rayo {
 
@@ -35,8 +34,8 @@ std::string size_text(long long width, long long height) {
     return std::to_string(width) + "x" + std::to_string(height);
 }
 
-// The temporary file of one output, its OpenImageIO writer and the writer thread. Pieces pushed
-// are queued; the writer thread takes everything queued at once and hands the batch, in the
+// The temporary file of one output, its writer (the image module's) and the writer thread. Pieces
+// pushed are queued; the writer thread takes everything queued at once and hands the batch, in the
 // order pushed, to `write` (the EXR stream joins adjacent tiles of a batch into one write_tiles
 // call, which OpenEXR compresses on its thread pool). `write` returns false on failure; the first
 // failure is kept and reported by push() and finish(). Destroyed without a successful finish(),
@@ -44,17 +43,16 @@ std::string size_text(long long width, long long height) {
 template <typename Piece>
 class FileWriter {
   public:
-    using WriteBatch = std::function<bool(OIIO::ImageOutput&, std::vector<Piece>&)>;
+    using WriteBatch = std::function<bool(ImageWriter&, std::vector<Piece>&)>;
 
-    FileWriter(const std::string& path, const OIIO::ImageSpec& spec, WriteBatch write)
+    FileWriter(const std::string& path, const ImageFileSpec& spec, WriteBatch write)
         : m_path(path), m_tmp(temporary_path_for(path)), m_guard(m_tmp), m_write(std::move(write)) {
+        const ImageLibrary& library = image_library();
         errno = 0;
-        m_out = OIIO::ImageOutput::create(m_tmp);
-        if (!m_out) fail_now(OIIO::geterror());
-        if (!m_out->open(m_tmp, spec)) {
+        std::string reason;
+        m_out = library.create_writer(m_tmp, spec, reason);
+        if (!m_out) {
             const int error = errno;
-            const std::string reason = m_out->geterror();
-            m_out.reset();
             std::remove(m_tmp.c_str());
             errno = error;
             fail_now(reason);
@@ -104,7 +102,7 @@ class FileWriter {
             throw_failure(lock);
         }
         errno = 0;
-        if (!m_out->close()) fail_now(m_out->geterror());
+        if (!m_out->close()) fail_now(m_out->error());
         if (std::rename(m_tmp.c_str(), m_path.c_str()) != 0)
             fail_now("cannot rename the temporary file");
         m_committed = true;
@@ -129,7 +127,7 @@ class FileWriter {
             errno = 0;
             const bool ok = m_write(*m_out, batch);
             const int error = errno;
-            const std::string reason = ok ? std::string() : m_out->geterror();
+            const std::string reason = ok ? std::string() : m_out->error();
             batch.clear();
             lock.lock();
             if (!ok) {
@@ -149,7 +147,7 @@ class FileWriter {
     std::string m_path, m_tmp;
     TemporaryFileGuard m_guard;
     WriteBatch m_write;
-    std::unique_ptr<OIIO::ImageOutput> m_out;
+    std::unique_ptr<ImageWriter> m_out;
     std::mutex m_mutex;
     std::condition_variable m_wake, m_room;
     std::deque<Piece> m_pieces;
@@ -174,8 +172,7 @@ struct TilePixels {
 // write_tiles call: OpenEXR compresses the tiles of one call in parallel on its thread pool
 // (OpenImageIO's "exr_threads", all cores by default), so compression is not bound to the one
 // writer thread. `run` is the reused buffer a run is gathered into.
-bool write_tile_runs(OIIO::ImageOutput& out, std::vector<TilePixels>& tiles,
-                     std::vector<float>& run) {
+bool write_tile_runs(ImageWriter& out, std::vector<TilePixels>& tiles, std::vector<float>& run) {
     std::sort(tiles.begin(), tiles.end(), [](const TilePixels& a, const TilePixels& b) {
         return a.tile.y0 != b.tile.y0 ? a.tile.y0 < b.tile.y0 : a.tile.x0 < b.tile.x0;
     });
@@ -201,8 +198,7 @@ bool write_tile_runs(OIIO::ImageOutput& out, std::vector<TilePixels>& tiles,
             }
             pixels = run.data();
         }
-        if (!out.write_tiles(start.x0, x1, start.y0, start.y0 + start.height, 0, 1,
-                             OIIO::TypeDesc::FLOAT, pixels)) {
+        if (!out.write_tiles(start.x0, x1, start.y0, start.y0 + start.height, pixels)) {
             return false;
         }
     }
@@ -212,8 +208,8 @@ bool write_tile_runs(OIIO::ImageOutput& out, std::vector<TilePixels>& tiles,
 // A tiled EXR: each tile is copied and queued as it arrives.
 class ExrTileStream : public TileStream {
   public:
-    ExrTileStream(const std::string& path, const OIIO::ImageSpec& spec)
-        : m_writer(path, spec, [this](OIIO::ImageOutput& out, std::vector<TilePixels>& tiles) {
+    ExrTileStream(const std::string& path, const ImageFileSpec& spec)
+        : m_writer(path, spec, [this](ImageWriter& out, std::vector<TilePixels>& tiles) {
               return write_tile_runs(out, tiles, m_run);
           }) {}
 
@@ -238,14 +234,14 @@ class ExrTileStream : public TileStream {
 // complete bands written in order.
 class BandStream : public TileStream {
   public:
-    BandStream(const std::string& path, ImageFormat format, const OIIO::ImageSpec& spec,
+    BandStream(const std::string& path, ImageFormat format, const ImageFileSpec& spec,
                const OutputOptions& options)
         : m_encoder(format, path, options),
           m_path(path),
           m_writer(path, spec,
-                   [type = m_encoder.type()](OIIO::ImageOutput& out, std::vector<Band>& bands) {
+                   [type = m_encoder.type()](ImageWriter& out, std::vector<Band>& bands) {
                        for (const Band& band : bands) {
-                           if (!out.write_scanlines(band.y0, band.y0 + band.height, 0, type,
+                           if (!out.write_scanlines(band.y0, band.y0 + band.height, type,
                                                     band.bytes.data()))
                                return false;
                        }
@@ -351,12 +347,11 @@ bool choose_streaming(const std::string& path, int width, int height, const Outp
 std::unique_ptr<TileStream> TileStream::open(const std::string& path, int width, int height,
                                              int tile_size, const OutputOptions& options) {
     const ImageFormat format = image_format_of(path);
-    OIIO::ImageSpec spec = image_spec(format, width, height, options);
+    ImageFileSpec spec = image_spec(format, width, height, options);
     if (format == ImageFormat::Exr) {
-        spec.tile_width = tile_size;
-        spec.tile_height = tile_size;
+        spec.tile_size = tile_size;
         // Tiles are written as they finish: OpenEXR must not buffer out-of-order tiles.
-        spec.attribute("openexr:lineOrder", "randomY");
+        spec.add("openexr:lineOrder", "randomY");
         return std::make_unique<ExrTileStream>(path, spec);
     }
     return std::make_unique<BandStream>(path, format, spec, options);

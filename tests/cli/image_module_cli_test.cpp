@@ -1,0 +1,80 @@
+// The image module (core/image_library.h, docs/performance.md "Fixed costs"): the rayo executable
+// does not load OpenImageIO until a command reads or writes an image, and a module that cannot
+// be loaded is a clear error that leaves no output behind. The dynamic loader's own log
+// (LD_DEBUG=libs, glibc) says which libraries the process loaded.
+#include <string>
+
+#include "cli_fixture.h"
+
+namespace rayo_test {
+namespace {
+
+class ImageModuleCli : public CliFixture {
+  protected:
+    // The libraries `rayo ARGS` loaded, from the dynamic loader's log (stderr with its output).
+    CommandResult run_logging_libraries(const std::string& args) const {
+        return run(args, "LD_DEBUG=libs");
+    }
+    static bool loaded_openimageio(const std::string& log) {
+        return log.find("libOpenImageIO.so") != std::string::npos;
+    }
+    // The log is the loader's: it names the libraries rayo links (Embree is always linked).
+    static bool is_loader_log(const std::string& log) {
+        return log.find("libembree3.so") != std::string::npos;
+    }
+};
+
+TEST_F(ImageModuleCli, CommandsWithoutImagesDoNotLoadOpenImageIO) {
+    write("two.nff", kSceneNff);
+    for (const std::string args :
+         {"--version", "--help", "render --no-such-flag", "info two.nff"}) {
+        const CommandResult r = run_logging_libraries(args);
+        EXPECT_TRUE(is_loader_log(r.output)) << args << ":\n" << r.output;
+        EXPECT_FALSE(loaded_openimageio(r.output)) << args;
+        EXPECT_EQ(r.output.find("librayo_oiio.so"), std::string::npos) << args;
+    }
+}
+
+TEST_F(ImageModuleCli, RenderLoadsTheModuleAndWritesThroughIt) {
+    write("two.nff", kSceneNff);
+    for (const std::string out : {"a.png", "b.exr"}) {
+        const CommandResult r =
+            run_logging_libraries("render two.nff --width 30 --quiet -o " + out);
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        EXPECT_NE(r.output.find("librayo_oiio.so"), std::string::npos) << out;
+        EXPECT_TRUE(loaded_openimageio(r.output)) << out;
+        EXPECT_EQ(read_pixels(out).size(), size_t(30) * 20 * 4) << out;
+    }
+}
+
+TEST_F(ImageModuleCli, MissingModuleIsAClearErrorAndLeavesNoOutput) {
+    write("two.nff", kSceneNff);
+    const std::string module = (m_dir / "nowhere" / "librayo_oiio.so").string();
+    // In memory, streamed EXR, streamed PNG: each path to a file fails before creating one.
+    for (const std::string args :
+         {"render two.nff --width 30 -o out.png", "render two.nff --width 30 --stream -o out.exr",
+          "render two.nff --width 30 --stream -o out.png"}) {
+        const CommandResult r = run(args, "RAYO_IMAGE_MODULE='" + module + "'");
+        EXPECT_EQ(r.exit_code, 1) << r.output;
+        EXPECT_NE(r.output.find("rayo: error: cannot load the image I/O module"), std::string::npos)
+            << r.output;
+        EXPECT_NE(r.output.find(module), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("No such file or directory"), std::string::npos) << r.output;
+        EXPECT_EQ(listing(), std::set<std::string>{"two.nff"}) << args;
+    }
+}
+
+TEST_F(ImageModuleCli, ALibraryThatIsNotTheModuleIsRefused) {
+    write("two.nff", kSceneNff);
+    // A shared library every process has, without the module's entry point.
+    const CommandResult r =
+        run("render two.nff --width 30 -o out.exr", "RAYO_IMAGE_MODULE=libm.so.6");
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("libm.so.6: no rayo_image_library (not rayo's image module)"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(listing(), std::set<std::string>{"two.nff"});
+}
+
+}  // namespace
+}  // namespace rayo_test
