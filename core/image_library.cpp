@@ -4,7 +4,9 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
@@ -47,6 +49,13 @@ std::vector<std::string> module_candidates() {
     return paths;
 }
 
+std::string load_failure(const std::string& tried) {
+    return "cannot load the image I/O module " + std::string(kImageModuleName) +
+           " (OpenImageIO), which reading and writing images needs: " + tried +
+           " (it is built beside the rayo executable and installed in " +
+           RAYO_IMAGE_MODULE_INSTALL_DIR + "; RAYO_IMAGE_MODULE names another path)";
+}
+
 // Loads the module (once, under load_state().once). The handle is never closed: writers and
 // texture caches made by the module may live until exit.
 void load_module(LoadState& state) {
@@ -76,10 +85,7 @@ void load_module(LoadState& state) {
         if (!tried.empty()) tried += "; ";
         tried += reason;
     }
-    state.error = "cannot load the image I/O module " + std::string(kImageModuleName) +
-                  " (OpenImageIO), which reading and writing images needs: " + tried +
-                  " (it is built beside the rayo executable and installed in " +
-                  RAYO_IMAGE_MODULE_INSTALL_DIR + "; RAYO_IMAGE_MODULE names another path)";
+    state.error = load_failure(tried);
 }
 
 // The preloading thread, joined at exit so that the process does not end while the dynamic
@@ -108,6 +114,19 @@ void preload_image_library() {
     if (preloader.thread.joinable() || state.loaded.load(std::memory_order_acquire)) return;
     preloader.thread =
         std::thread([&state] { std::call_once(state.once, [&] { load_module(state); }); });
+}
+
+void check_image_library() {
+    if (image_library_loaded()) return;
+    std::string tried;
+    for (const std::string& path : module_candidates()) {
+        // A bare name is for dlopen's search path: only loading it tells.
+        if (path.find('/') == std::string::npos || ::access(path.c_str(), R_OK) == 0) return;
+        const int error = errno;
+        if (!tried.empty()) tried += "; ";
+        tried += path + ": " + std::strerror(error);
+    }
+    throw std::runtime_error(load_failure(tried));
 }
 
 bool image_library_loaded() {

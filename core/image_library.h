@@ -140,6 +140,12 @@ const ImageLibrary& image_library();
 // is reported by image_library(). Idempotent.
 void preload_image_library();
 
+// Throws image_library()'s error when no candidate path of the module exists, without loading
+// it: check_output (core/image/image_output.h) calls it before a render, so that a missing
+// module fails before the work (a module that exists but does not load fails at the first
+// image call).
+void check_image_library();
+
 // Whether the module is loaded in this process (tests).
 bool image_library_loaded();
 

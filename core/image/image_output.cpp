@@ -93,6 +93,7 @@ bool is_exr_compression(const std::string& name) {
 
 void check_output(const std::string& path, const OutputOptions& options) {
     const ImageFormat format = image_format_of(path);
+    check_image_library();
     if (format != ImageFormat::Exr) {
         std::string display = options.display, view = options.view;
         resolve_display_view(load_ocio_config(), path, display, view);

@@ -39,7 +39,8 @@ std::string ocio_config_path();
 // that a typo in the output name does not throw the render away: a known extension, the
 // display/view (display formats), a directory that exists, is a directory and is writable, a
 // path that is not a directory, and a file name the file system takes (the temporary name is
-// shortened to fit). Throws InputError naming the path and the reason.
+// shortened to fit). Throws InputError naming the path and the reason (std::runtime_error when
+// the image module is missing: core/image_library.h, check_image_library).
 void check_output(const std::string& path, const OutputOptions& options);
 
 // Throws InputError (where = the path) for an unknown extension, an unknown display/view or an
