@@ -38,13 +38,17 @@ std::string executable_directory() {
 }
 
 // Where the module is looked for, in order: $RAYO_IMAGE_MODULE alone when set; else beside the
-// executable (the build tree, or an installed bin/ that holds it), then the install directory.
+// executable (the build tree), then in ../lib/rayo from it (an install moved to another prefix),
+// then the install directory configured at build time.
 std::vector<std::string> module_candidates() {
     const char* env = std::getenv("RAYO_IMAGE_MODULE");
     if (env != nullptr && env[0] != '\0') return {env};
     std::vector<std::string> paths;
     const std::string dir = executable_directory();
-    if (!dir.empty()) paths.push_back(dir + "/" + kImageModuleName);
+    if (!dir.empty()) {
+        paths.push_back(dir + "/" + kImageModuleName);
+        paths.push_back(dir + "/../lib/rayo/" + kImageModuleName);
+    }
     paths.push_back(std::string(RAYO_IMAGE_MODULE_INSTALL_DIR) + "/" + kImageModuleName);
     return paths;
 }

@@ -131,7 +131,8 @@ constexpr const char* kImageLibraryEntry = "rayo_image_library";
 constexpr const char* kImageModuleName = "librayo_oiio.so";
 
 // The module, loaded on the first call (by any thread; others wait for it). Looks in
-// $RAYO_IMAGE_MODULE when set, else next to the executable, else in the install directory.
+// $RAYO_IMAGE_MODULE when set, else next to the executable, else in ../lib/rayo from it, else in
+// the install directory.
 // Throws InputError naming the paths tried and dlopen's reason when it cannot be loaded.
 const ImageLibrary& image_library();
 
