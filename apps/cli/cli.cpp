@@ -80,10 +80,10 @@ const char* const kInputs =
     R"(inputs (SCENE, by its extension, case-insensitive; docs/scene-format.md):
   .json                    rayo's scene format
   .nff                     Neutral File Format (the SPD scenes)
-  model files, also the files a JSON "mesh" object may name; rendered with the file's first
-  camera and its lights when it has them (glTF cameras, KHR_lights_punctual, emissive
-  surfaces; --camera chooses), else framed automatically (camera, key and fill light), on a
-  ground square (--no-ground):
+  model files, also the files a JSON "mesh" object may name; rendered with their own
+  camera and lights when the file has them (glTF cameras, --camera chooses; KHR_lights_punctual;
+  emissive surfaces), else framed automatically (camera, key and fill light); a ground square
+  under the model (--no-ground):
   .obj                     Wavefront OBJ, with its .mtl material libraries
   .gltf, .glb              glTF 2.0, also Draco-compressed (KHR_draco_mesh_compression)
   .ply                     Stanford PLY, ASCII or binary, with vertex colours and normals
@@ -168,7 +168,8 @@ render options:
 
 const char* const kInfoHelp = R"(usage: rayo info SCENE
   load SCENE and print what it contains: resolution and field of view, objects by kind,
-  meshes, triangles, vertices, materials, lights, bounds and the load's warnings (a model file
+  meshes, triangles, vertices, materials, lights, bounds (of everything placed, instances
+  included: the box the framing of model files uses) and the load's warnings (a model file
   without the ground square of its framing); no options
 
 )";
