@@ -169,14 +169,14 @@ void WhittedIntegrator::with_pbr_images(uint32_t material, const PbrImages& pbr,
         // glTF 2.0 (3.9.2): metalness in B, roughness in G, linear, times the factors; the
         // metallic workflow redone with the hit's base colour (shading/metallic_roughness.h).
         const glm::vec4 t = m_images->lookup(material, Slot::MetallicRoughness, uv, width);
-        const float metallic = pbr.metallic_factor * std::clamp(t.b, 0.0f, 1.0f);
-        const float roughness = pbr.roughness_factor * std::clamp(t.g, 0.0f, 1.0f);
+        const float metallic = pbr.metallic_factor * std::clamp(t.z, 0.0f, 1.0f);
+        const float roughness = pbr.roughness_factor * std::clamp(t.y, 0.0f, 1.0f);
         apply_metallic_roughness(c, pbr.base_factor * base_texel, metallic, roughness);
     }
     if (m_images->has(material, Slot::Occlusion)) {
         // glTF occlusion (R, linear) darkens the ambient term only: direct light is shadowed by
         // shadow rays already.
-        const float occlusion = m_images->lookup(material, Slot::Occlusion, uv, width).r;
+        const float occlusion = m_images->lookup(material, Slot::Occlusion, uv, width).x;
         c.ka *= occlusion_factor(std::clamp(occlusion, 0.0f, 1.0f), pbr.occlusion_strength);
     }
 }

@@ -25,10 +25,10 @@ namespace {
 using Json = nlohmann::json;
 using rayo_test::TempDir;
 
-// A 32 × 16 RGB PNG: the colour `left` in columns 0..15, `right` in 16..31.
+// A w × 16 RGB PNG: the colour `left` in its left half, `right` in its right half.
 void write_halves(const std::string& path, const std::array<unsigned char, 3>& left,
-                  const std::array<unsigned char, 3>& right) {
-    const int w = 32, h = 16;
+                  const std::array<unsigned char, 3>& right, int w = 32) {
+    const int h = 16;
     std::vector<unsigned char> pixels(static_cast<size_t>(w * h * 3));
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
@@ -48,9 +48,9 @@ void write_halves(const std::string& path, const std::array<unsigned char, 3>& l
 struct QuadsGltf {
     Json root = {{"asset", {{"version", "2.0"}}},
                  {"scene", 0},
-                 {"scenes", {{{"nodes", {}}}}},
+                 {"scenes", Json::array({Json{{"nodes", Json::array()}}})},
                  {"nodes", Json::array()},
-                 {"meshes", {}},
+                 {"meshes", Json::array()},
                  {"materials", Json::array()},
                  {"accessors", Json::array()},
                  {"bufferViews", Json::array()}};
@@ -80,34 +80,27 @@ struct QuadsGltf {
         const uint32_t indices[6] = {0, 1, 2, 0, 2, 3};
         const int index = accessor(indices, sizeof indices, 5125, 6, "SCALAR");
         root["materials"].push_back(material);
-        root["meshes"].push_back(
-            {
-            {
-                "primitives", {
-                    {
-                        {"attributes", {{"POSITION", position}, {"TEXCOORD_0", texcoord}}},
-                            {"indices", index}, {
-                            "material", root["materials"].size() - 1
-                        }
-                    }
-                }
-            }}
-    });
-    root["nodes"].push_back({{"mesh", root["meshes"].size() - 1}});
-    root["scenes"][0]["nodes"].push_back(root["nodes"].size() - 1);
-}
-    // A texture of the image file `uri`; its index.
+        const Json primitive = {{"attributes", {{"POSITION", position}, {"TEXCOORD_0", texcoord}}},
+                                {"indices", index},
+                                {"material", root["materials"].size() - 1}};
+        root["meshes"].push_back({{"primitives", Json::array({primitive})}});
+        root["nodes"].push_back({{"mesh", root["meshes"].size() - 1}});
+        root["scenes"][0]["nodes"].push_back(root["nodes"].size() - 1);
+    }
+    // A texture of the image file `uri`, clamped to its edges (with the default REPEAT the
+    // filter would mix the opposite edge in); its index.
     int texture(const std::string& uri) {
-    root["images"].push_back({{"uri", uri}});
-    root["textures"].push_back({{"source", root["images"].size() - 1}});
-    return static_cast<int>(root["textures"].size()) - 1;
-}
-std::string write(const TempDir& dir, const std::string& name) {
-    root["buffers"] = {
-        {{"byteLength", buffer.size()},
-         {"uri", "data:application/octet-stream;base64," + rayo_test::base64(buffer)}}};
-    return dir.write(name, root.dump());
-}
+        root["images"].push_back({{"uri", uri}});
+        root["samplers"] = Json::array({Json{{"wrapS", 33071}, {"wrapT", 33071}}});
+        root["textures"].push_back({{"source", root["images"].size() - 1}, {"sampler", 0}});
+        return static_cast<int>(root["textures"].size()) - 1;
+    }
+    std::string write(const TempDir& dir, const std::string& name) {
+        root["buffers"] = {
+            {{"byteLength", buffer.size()},
+             {"uri", "data:application/octet-stream;base64," + rayo_test::base64(buffer)}}};
+        return dir.write(name, root.dump());
+    }
 };
 
 Json pbr_material(const Vec3& base, double metallic, double roughness) {
@@ -272,7 +265,9 @@ float floor_light(const SceneDescription& d, float x, float z) {
 
 TEST(PbrTextures, EmissiveTextureShapesTheLightOfTheMeshEmitter) {
     const TempDir dir;
-    write_halves(dir.file("half.png"), {0, 0, 0}, {255, 255, 255});  // u < 0.5 (x < 0) black
+    // u < 0.5 (x < 0) black; 256 texels wide, so that the filtered edge between the halves
+    // (a few texels, filtered on sRGB-encoded values: darker than the mean) is a thin strip.
+    write_halves(dir.file("half.png"), {0, 0, 0}, {255, 255, 255}, 256);
     const SceneDescription textured = lit_floor(dir, "half.png");
     const SceneDescription uniform = lit_floor(dir, "");
     const SceneDescription half = lit_floor(dir, "", true);
