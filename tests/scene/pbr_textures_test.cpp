@@ -3,7 +3,7 @@
 // written by the test: a quad whose metallicRoughnessTexture is metal in one half and a rough
 // dielectric in the other shades like the two factor-only materials; occlusion darkens the
 // ambient term only; an emitter whose emissiveTexture is black in one half lights the floor
-// under its bright half only, as much as a light of that half alone.
+// under its bright half only, as much as a light of that half alone; MTL map_Ke.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
@@ -283,6 +283,23 @@ TEST(PbrTextures, EmissiveTextureShapesTheLightOfTheMeshEmitter) {
         EXPECT_GT(expected, 0.0f);
         EXPECT_NEAR(floor_light(textured, x, 0.3f), expected, 0.03f * expected) << "x " << x;
     }
+}
+
+// MTL map_Ke multiplies Ke (sRGB), as the glTF emissive texture multiplies its factor.
+TEST(PbrTextures, MtlMapKeMultipliesKe) {
+    const TempDir dir;
+    write_halves(dir.file("ke.png"), {0, 0, 0}, {255, 255, 255});
+    dir.write("quad.obj",
+              "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+              "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl glow\nf 1/1 2/2 3/3 4/4\n");
+    dir.write("quad.mtl", "newmtl glow\nKa 0 0 0\nKd 0 0 0\nKs 0 0 0\nKe 2 1 0.5\nmap_Ke ke.png\n");
+    SceneDescription d = load(dir.file("quad.obj"));
+    EXPECT_TRUE(d.warnings.empty());
+    d.shading.ambient_light = Vec3(0.0f);
+    expect_near(seen(d, Vec3(0.25f, 0.5f, 0), Vec3(0.25f, 0.5f, 3), Vec3(0, 1, 0)), Vec3(0.0f),
+                1e-6f, "black half");
+    expect_near(seen(d, Vec3(0.75f, 0.5f, 0), Vec3(0.75f, 0.5f, 3), Vec3(0, 1, 0)),
+                Vec3(2.0f, 1.0f, 0.5f), 1e-4f, "white half");
 }
 
 }  // namespace
