@@ -43,7 +43,13 @@ float luminance(const Vec3& c) {
 }  // namespace
 
 void MeshEmitter::add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& radiance) {
-    const Triangle t{a, b - a, c - a, radiance};
+    add(a, b, c, radiance, kNoEmissionImage, glm::vec2(0.0f), glm::vec2(0.0f), glm::vec2(0.0f));
+}
+
+void MeshEmitter::add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& radiance,
+                      uint32_t material, const glm::vec2& uv_a, const glm::vec2& uv_b,
+                      const glm::vec2& uv_c) {
+    const Triangle t{a, b - a, c - a, radiance, material, uv_a, uv_b, uv_c};
     const float area = 0.5f * glm::length(glm::cross(t.e1, t.e2));
     const float weight = area * luminance(radiance);
     if (!(area > 0.0f) || !(weight > 0.0f) || !std::isfinite(weight)) return;
@@ -67,12 +73,20 @@ bool MeshEmitter::sample(const Vec3& point, const glm::vec2& u, LightSample& out
     // far edge), area pdf 1/Aᵢ; with the pick, the area pdf is wᵢ/(W·Aᵢ) = 1/A_eff.
     const Triangle& t = m_triangles[i];
     const float s = std::sqrt(v);
-    const Vec3 target_point = t.p0 + s * (1.0f - u.y) * t.e1 + s * u.y * t.e2;
+    const float b1 = s * (1.0f - u.y), b2 = s * u.y;
+    const Vec3 target_point = t.p0 + b1 * t.e1 + b2 * t.e2;
     const Vec3 cross = glm::cross(t.e1, t.e2);
     const float cross_length = glm::length(cross);
     const float triangle_area = 0.5f * cross_length;
     const float effective_area = triangle_area * total / weight;
-    return flat_sample(point, target_point, cross / cross_length, effective_area, t.radiance, out);
+    if (!flat_sample(point, target_point, cross / cross_length, effective_area, t.radiance, out)) {
+        return false;
+    }
+    if (t.image_material != kNoEmissionImage) {
+        out.emission_material = t.image_material;
+        out.uv = t.uv0 + b1 * (t.uv1 - t.uv0) + b2 * (t.uv2 - t.uv0);
+    }
+    return true;
 }
 
 float AreaLight::area() const {

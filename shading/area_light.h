@@ -14,15 +14,27 @@ namespace rayo {
 // triangles emit. A sample picks a triangle with probability proportional to its power
 // (area × luminance of its radiance: by area when all emit alike), then a uniform point on it,
 // so the cost per shading point is the light's `samples` whatever the triangle count; memory is
-// one Triangle and one float per emissive triangle.
+// one Triangle and one float per emissive triangle. Emission images (glTF emissiveTexture, MTL
+// map_Ke) are applied by the integrator at the sampled point (LightSample::emission_material).
 class MeshEmitter {
   public:
     struct Triangle {
         Vec3 p0{0.0f}, e1{0.0f}, e2{0.0f};  // p0 + s·e1 + t·e2; emits toward e1 × e2
         Vec3 radiance{0.0f};
+        // A material with an emission image: its index (the sample's radiance is `radiance`
+        // times the image at the point's texture coordinates), and the coordinates at p0,
+        // p0 + e1 and p0 + e2. kNoEmissionImage: `radiance` is uniform.
+        uint32_t image_material = kNoEmissionImage;
+        glm::vec2 uv0{0.0f}, uv1{0.0f}, uv2{0.0f};
     };
-    // Ignores triangles of zero area or zero radiance.
+    // Ignores triangles of zero area or zero radiance. The weight of a triangle in the pick is
+    // its area times the luminance of `radiance` (the factor: an emission image is not looked
+    // at, so the estimator stays unbiased wherever the image is non-zero).
     void add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& radiance);
+    // The same for a triangle whose material `material` has an emission image, with the
+    // texture coordinates of a, b, c.
+    void add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& radiance, uint32_t material,
+             const glm::vec2& uv_a, const glm::vec2& uv_b, const glm::vec2& uv_c);
     bool empty() const { return m_triangles.empty(); }
     size_t size() const { return m_triangles.size(); }
     float area() const { return m_area; }

@@ -48,15 +48,32 @@ struct ImageTerm {
     Vec3 apply(const Vec3& texel) const { return offset + scale * texel; }
 };
 
+// glTF metallicRoughnessTexture and occlusionTexture (linear values, docs/models.md): at each hit
+// the metallic workflow (shading/metallic_roughness.h) is redone with base colour = base_factor ×
+// the base texel (the factor alone without a base image), metallic = metallic_factor × B and
+// roughness = roughness_factor × G of `metallic_roughness`; the ambient coefficient is multiplied
+// by 1 + occlusion_strength·(R − 1) of `occlusion`.
+struct PbrImages {
+    ImageMap metallic_roughness;
+    Vec3 base_factor{1.0f};
+    float metallic_factor = 1.0f;
+    float roughness_factor = 1.0f;
+    ImageMap occlusion;
+    float occlusion_strength = 1.0f;
+    bool used() const { return metallic_roughness.used() || occlusion.used(); }
+};
+
 // The image textures of a material. `base` drives ka, kd, ks and reflect through their terms
 // (each term unused leaves its coefficient constant); `specular` multiplies ks (MTL map_Ks);
-// `emission` multiplies the emission (glTF emissiveTexture × emissiveFactor).
+// `emission` multiplies the emission (glTF emissiveTexture × emissiveFactor, MTL map_Ke × Ke);
+// `pbr` the glTF metallic-roughness and occlusion images.
 struct MaterialImages {
     ImageMap base;
     ImageTerm ka, kd, ks, reflect;
     ImageMap specular;
     ImageMap emission;
-    bool any() const { return base.used() || specular.used() || emission.used(); }
+    PbrImages pbr;
+    bool any() const { return base.used() || specular.used() || emission.used() || pbr.used(); }
 };
 
 }  // namespace rayo

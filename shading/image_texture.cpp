@@ -92,7 +92,7 @@ struct ImageTextures::Impl {
     float limit_mb = 0.0f;
     std::vector<Entry> entries;
     std::map<const ImageSource*, size_t> index_of;
-    std::vector<std::array<Use, 3>> uses;  // per material, per Slot
+    std::vector<std::array<Use, kSlotCount>> uses;  // per material, per Slot
     std::unique_ptr<TextureCache> system;  // last: destroyed before the bytes it reads
 
     size_t add(const std::shared_ptr<const ImageSource>& source) {
@@ -136,6 +136,9 @@ ImageTextures::ImageTextures(const std::vector<Material>& materials, float max_m
         impl.uses[m][static_cast<size_t>(Slot::Base)] = impl.use_of(images.base);
         impl.uses[m][static_cast<size_t>(Slot::Specular)] = impl.use_of(images.specular);
         impl.uses[m][static_cast<size_t>(Slot::Emission)] = impl.use_of(images.emission);
+        impl.uses[m][static_cast<size_t>(Slot::MetallicRoughness)] =
+            impl.use_of(images.pbr.metallic_roughness);
+        impl.uses[m][static_cast<size_t>(Slot::Occlusion)] = impl.use_of(images.pbr.occlusion);
     }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Image textures (docs/textures.md, "Image textures"): the images a material names (glTF
-// baseColorTexture/emissiveTexture, MTL map_Kd/map_Ks, JSON {"image": file}) and one
+// baseColorTexture/emissiveTexture/metallicRoughnessTexture/occlusionTexture, MTL
+// map_Kd/map_Ks/map_Ke, JSON {"image": file}) and one
 // OpenImageIO TextureSystem per render that filters them (mip-mapped, cached, memory bounded).
 #include <cstdint>
 #include <glm/vec2.hpp>
@@ -42,7 +43,8 @@ class ImageTextures {
     // map's transform) with the footprint `width` in uv units (isotropic: the pixel's extent
     // on the surface in texture coordinates); RGB decoded to linear when the image is sRGB.
     // Alpha is 1 for images without one.
-    enum class Slot { Base, Specular, Emission };
+    enum class Slot { Base, Specular, Emission, MetallicRoughness, Occlusion };
+    static constexpr size_t kSlotCount = 5;
     glm::vec4 lookup(uint32_t material, Slot slot, const glm::vec2& uv, float width) const;
     bool has(uint32_t material, Slot slot) const;
 

@@ -3,12 +3,15 @@
 // the unit direction toward the light, the distance to it (infinity for directional lights),
 // the radiance arriving along that direction before the cosine, and the pdf of the direction
 // (1 for lights that are a single direction: point and directional).
+#include <cstdint>
 #include <glm/vec2.hpp>
 #include <limits>
 
 #include "core/math.h"
 
 namespace rayo {
+
+constexpr uint32_t kNoEmissionImage = std::numeric_limits<uint32_t>::max();
 
 struct LightSample {
     Vec3 direction{0.0f};
@@ -18,6 +21,10 @@ struct LightSample {
     // The point lies on an emitting surface that is also an object of the scene (area lights):
     // its shadow ray must end just short of that very point.
     bool on_surface = false;
+    // A point of an emitter whose material has an emission image (MeshEmitter): the radiance is
+    // still to be multiplied by that image at `uv` (the integrator holds the images).
+    uint32_t emission_material = kNoEmissionImage;
+    glm::vec2 uv{0.0f};
 };
 
 }  // namespace rayo

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "shading/media.h"
+#include "shading/metallic_roughness.h"
 #include "shading/optics.h"
 #include "shading/phong.h"
 
@@ -140,13 +141,17 @@ SurfaceCoefficients WhittedIntegrator::with_images(const SurfaceHit& hit,
     const float scale = dv > 0.0f ? std::sqrt(du * dv) : du;
     const float width = scale > 0.0f ? world / scale : 0.0f;
     using Slot = ImageTextures::Slot;
+    Vec3 base_texel(1.0f);
     if (m_images->has(hit.material, Slot::Base)) {
         const Vec3 texel(m_images->lookup(hit.material, Slot::Base, surface.uv, width));
         if (images.ka.used) c.ka = images.ka.apply(texel);
         if (images.kd.used) c.kd = images.kd.apply(texel);
         if (images.ks.used) c.ks = images.ks.apply(texel);
         if (images.reflect.used) c.reflect = images.reflect.apply(texel);
+        base_texel = texel;
     }
+    if (images.pbr.used())
+        with_pbr_images(hit.material, images.pbr, base_texel, surface.uv, width, c);
     if (m_images->has(hit.material, Slot::Specular)) {
         c.ks *= Vec3(m_images->lookup(hit.material, Slot::Specular, surface.uv, width));
     }
@@ -154,6 +159,26 @@ SurfaceCoefficients WhittedIntegrator::with_images(const SurfaceHit& hit,
         c.emission *= Vec3(m_images->lookup(hit.material, Slot::Emission, surface.uv, width));
     }
     return c;
+}
+
+void WhittedIntegrator::with_pbr_images(uint32_t material, const PbrImages& pbr,
+                                        const Vec3& base_texel, const glm::vec2& uv, float width,
+                                        SurfaceCoefficients& c) const {
+    using Slot = ImageTextures::Slot;
+    if (m_images->has(material, Slot::MetallicRoughness)) {
+        // glTF 2.0 (3.9.2): metalness in B, roughness in G, linear, times the factors; the
+        // metallic workflow redone with the hit's base colour (shading/metallic_roughness.h).
+        const glm::vec4 t = m_images->lookup(material, Slot::MetallicRoughness, uv, width);
+        const float metallic = pbr.metallic_factor * std::clamp(t.z, 0.0f, 1.0f);
+        const float roughness = pbr.roughness_factor * std::clamp(t.y, 0.0f, 1.0f);
+        apply_metallic_roughness(c, pbr.base_factor * base_texel, metallic, roughness);
+    }
+    if (m_images->has(material, Slot::Occlusion)) {
+        // glTF occlusion (R, linear) darkens the ambient term only: direct light is shadowed by
+        // shadow rays already.
+        const float occlusion = m_images->lookup(material, Slot::Occlusion, uv, width).x;
+        c.ka *= occlusion_factor(std::clamp(occlusion, 0.0f, 1.0f), pbr.occlusion_strength);
+    }
 }
 
 Vec3 WhittedIntegrator::ambient_and_emission(const ShadingPoint& p) const {
@@ -182,6 +207,12 @@ WhittedIntegrator::LightSide WhittedIntegrator::light_sample(const ShadingPoint&
     if (p.radiosity && std::holds_alternative<AreaLight>(light)) return LightSide::None;
     LightSample sample;
     if (!sample_light(light, hit.position, u, sample)) return LightSide::None;
+    if (sample.emission_material != kNoEmissionImage && m_images) {
+        // An emitter's image at the sampled point (emissiveTexture × emissiveFactor, MTL
+        // map_Ke × Ke), the radiance a camera ray sees there (with_images).
+        sample.radiance *= Vec3(m_images->lookup(sample.emission_material,
+                                                 ImageTextures::Slot::Emission, sample.uv, 0.0f));
+    }
     to_light = sample.direction;
     const float light_distance = sample.distance;
     light_radiance = sample.radiance / sample.pdf;

@@ -104,6 +104,10 @@ class WhittedIntegrator {
     // Accel::parameterize), replacing the coefficients they drive.
     SurfaceCoefficients with_images(const SurfaceHit& hit, const MaterialImages& images,
                                     SurfaceCoefficients coefficients) const;
+    // The glTF metallic-roughness and occlusion images of material `material` at `uv`
+    // (`base_texel`: the base colour image's texel there, 1 without one).
+    void with_pbr_images(uint32_t material, const PbrImages& pbr, const Vec3& base_texel,
+                         const glm::vec2& uv, float width, SurfaceCoefficients& c) const;
     // Which side of the surface a light sample lies on: the side the ray arrived on (the local
     // model), the far side of a translucent surface (diffuse transmission), or neither.
     enum class LightSide { None, Front, Back };

@@ -40,6 +40,7 @@
 #include "core/image_library.h"
 #include "core/path_util.h"
 #include "core/progress.h"
+#include "core/scene_bounds.h"
 #include "core/stop_request.h"
 #include "shading/texture.h"
 
@@ -57,8 +58,9 @@ const char* const kOverview =
     R"(rayo — a Whitted ray tracer (Embree + TBB + OpenImageIO + OpenColorIO)
 
 usage:
-  rayo render [SCENE] [options]   render SCENE (a scene, or a model file framed automatically);
-                                  the built-in scene without one
+  rayo render [SCENE] [options]   render SCENE (a scene, or a model file: its own camera and
+                                  lights when it has them, else framed automatically); the
+                                  built-in scene without one
   rayo info SCENE                 load SCENE and print what it contains
   rayo bench accuracy -o DIR [--size N] [--only spheres|shapes]
                                   the sphere- and shape-method studies: CSV and charts
@@ -79,8 +81,10 @@ const char* const kInputs =
     R"(inputs (SCENE, by its extension, case-insensitive; docs/scene-format.md):
   .json                    rayo's scene format
   .nff                     Neutral File Format (the SPD scenes)
-  model files, framed automatically (camera, key and fill light, ground), also the files a
-  JSON "mesh" object may name:
+  model files, also the files a JSON "mesh" object may name; rendered with their own
+  camera and lights when the file has them (glTF cameras, --camera chooses; KHR_lights_punctual;
+  emissive surfaces), else framed automatically (camera, key and fill light); a ground square
+  under the model (--no-ground):
   .obj                     Wavefront OBJ, with its .mtl material libraries
   .gltf, .glb              glTF 2.0, also Draco-compressed (KHR_draco_mesh_compression)
   .ply                     Stanford PLY, ASCII or binary, with vertex colours and normals
@@ -165,7 +169,8 @@ render options:
 
 const char* const kInfoHelp = R"(usage: rayo info SCENE
   load SCENE and print what it contains: resolution and field of view, objects by kind,
-  meshes, triangles, vertices, materials, lights, bounds and the load's warnings (a model file
+  meshes, triangles, vertices, materials, lights, bounds (of everything placed, instances
+  included: the box the framing of model files uses) and the load's warnings (a model file
   without the ground square of its framing); no options
 
 )";
@@ -1117,23 +1122,6 @@ size_t vertex_count(const Scene& scene) {
     return n;
 }
 
-// The axis-aligned box of the objects placed directly (instances not included), if any.
-std::optional<Bounds3> direct_bounds(const Scene& scene) {
-    std::optional<Bounds3> box;
-    auto extend = [&](const Bounds3& b) {
-        box = box ? Bounds3{glm::min(box->lower, b.lower), glm::max(box->upper, b.upper)} : b;
-    };
-    scene.shapes.for_each([&](const auto& shapes) {
-        for (const auto& s : shapes) extend(s.bounds());
-    });
-    for (const TriangleMesh& m : scene.meshes) {
-        for (const Vec3& p : m.positions) extend({p, p});
-    }
-    for (const HeightField& h : scene.heightfields) extend(h.bounds());
-    for (const VoxelGrid& v : scene.voxels) extend(v.bounds());
-    return box;
-}
-
 // One line of `rayo info` about a light: its type, place or direction and intensity.
 std::string describe_light(const Light& light) {
     std::ostringstream out;
@@ -1186,7 +1174,7 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
         << "materials " << d.shading.materials.size() << "\n"
         << "lights " << d.shading.lights.size() << "\n"
         << "skipped_triangles " << d.skipped_triangles << "\n";
-    if (const std::optional<Bounds3> box = direct_bounds(d.scene)) {
+    if (const std::optional<Bounds3> box = scene_bounds(d.scene)) {
         out << "bounds " << box->lower.x << " " << box->lower.y << " " << box->lower.z << "  "
             << box->upper.x << " " << box->upper.y << " " << box->upper.z << "\n";
     }

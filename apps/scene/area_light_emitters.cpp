@@ -54,7 +54,15 @@ size_t add_mesh_emitter_light(SceneDescription& d, int samples) {
                 p[k] = mesh.positions[mesh.triangles[t][k]];
                 if (transform) p[k] = Vec3(*transform * glm::vec4(p[k], 1.0f));
             }
-            emitter->add(p[0], p[1], p[2], materials[id].emission);
+            const Material& m = materials[id];
+            if (m.images.emission.used() && !mesh.uvs.empty()) {
+                // The emission image multiplies the factor at the sampled point.
+                const auto& v = mesh.triangles[t];
+                emitter->add(p[0], p[1], p[2], m.emission, id, mesh.uvs[v[0]], mesh.uvs[v[1]],
+                             mesh.uvs[v[2]]);
+            } else {
+                emitter->add(p[0], p[1], p[2], m.emission);
+            }
         }
     };
     for (const TriangleMesh& mesh : d.scene.meshes) add_mesh(mesh, nullptr, kNoMaterialOverride);

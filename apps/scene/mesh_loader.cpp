@@ -34,6 +34,7 @@
 #include "core/path_util.h"
 #include "core/scene.h"
 #include "core/scene_limits.h"
+#include "shading/metallic_roughness.h"
 
 namespace rayo {
 
@@ -315,9 +316,9 @@ std::shared_ptr<const ImageSource> model_texture(const std::string& file, const 
 }
 
 // MTL maps (docs/textures.md): map_Kd multiplies Kd (kd = Kd·texel; the default ambient
-// follows it when Ka equals Kd), map_Ks multiplies Ks. Paths are relative to the library's
-// folder (backslashes read as slashes); -s and -o scale and offset the coordinates, -clamp
-// clamps them. Both maps are sRGB-encoded colour by convention.
+// follows it when Ka equals Kd), map_Ks multiplies Ks, map_Ke multiplies Ke. Paths are relative to
+// the library's folder (backslashes read as slashes); -s and -o scale and offset the coordinates,
+// -clamp clamps them. The maps are sRGB-encoded colour by convention.
 void attach_mtl_images(Material& out, const tinyobj::material_t& m, const std::string& dir,
                        const std::string& path, const FileAccess& access, TextureImageCache& cache,
                        MeshImportStats* stats) {
@@ -345,6 +346,7 @@ void attach_mtl_images(Material& out, const tinyobj::material_t& m, const std::s
         if (out.ka == out.kd) out.images.ka = ImageTerm{true, Vec3(0.0f), out.ka};
     }
     out.images.specular = map_of(m.specular_texname, m.specular_texopt, "map_Ks");
+    out.images.emission = map_of(m.emissive_texname, m.emissive_texopt, "map_Ke");
 }
 
 }  // namespace
@@ -541,22 +543,8 @@ Material material_from_gltf(const tinygltf::Material& m, size_t index, const std
     const Vec3 base(static_cast<float>(pbr.baseColorFactor[0]),
                     static_cast<float>(pbr.baseColorFactor[1]),
                     static_cast<float>(pbr.baseColorFactor[2]));
-    const auto metallic = static_cast<float>(pbr.metallicFactor);
-    const double roughness = pbr.roughnessFactor;
-    // The metallic workflow (glTF 2.0 specification, Appendix B): the specular colour at normal
-    // incidence is F0 = mix(0.04, baseColor, metallic) and only the dielectric part diffuses,
-    // kd = (1 − metallic)·baseColor. F0 colours the Phong highlight, whose exponent matches a
-    // GGX/Beckmann roughness α = r²: n = 2/α² − 2. A perfect mirror only approximates a smooth
-    // surface, so its weight fades with roughness: reflect = F0·(1 − r)² (docs/scene-format.md).
-    const Vec3 f0 = glm::mix(Vec3(0.04f), base, metallic);
-    out.kd = (1.0f - metallic) * base;
-    out.ka = 0.1f * base;
-    out.ks = f0;
-    const auto gloss = static_cast<float>((1.0 - roughness) * (1.0 - roughness));
-    out.reflect = gloss * f0;
-    const double r4 = roughness * roughness * roughness * roughness;
-    const double exponent = r4 > 0.0 ? 2.0 / r4 - 2.0 : 10000.0;
-    out.shininess = static_cast<float>(std::clamp(exponent, 1.0, 10000.0));
+    apply_metallic_roughness(out, base, static_cast<float>(pbr.metallicFactor),
+                             pbr.roughnessFactor);
     // emissiveFactor (× KHR_materials_emissive_strength) is the radiance the surface sends.
     if (m.emissiveFactor.size() == 3) {
         double strength = 1.0;
@@ -1106,6 +1094,36 @@ void attach_gltf_images(Material& out, const tinygltf::Material& m, GltfTextures
     out.images.emission = textures.map(m.emissiveTexture, out.name, "emissiveTexture");
 }
 
+// metallicRoughnessTexture and occlusionTexture (docs/models.md): linear images, read with the
+// sampler, texCoord and KHR_texture_transform as the base colour's; the factors they multiply
+// are kept for the per-hit metallic workflow (shading/image_map.h PbrImages).
+void attach_gltf_pbr_images(Material& out, const tinygltf::Material& m, GltfTextures& textures) {
+    const auto& pbr = m.pbrMetallicRoughness;
+    PbrImages& images = out.images.pbr;
+    images.metallic_roughness =
+        textures.map(pbr.metallicRoughnessTexture, out.name, "metallicRoughnessTexture");
+    images.metallic_roughness.encoding = TextureEncoding::Linear;
+    images.base_factor =
+        Vec3(static_cast<float>(pbr.baseColorFactor[0]), static_cast<float>(pbr.baseColorFactor[1]),
+             static_cast<float>(pbr.baseColorFactor[2]));
+    images.metallic_factor = static_cast<float>(pbr.metallicFactor);
+    images.roughness_factor = static_cast<float>(pbr.roughnessFactor);
+    const tinygltf::OcclusionTextureInfo& occlusion = m.occlusionTexture;
+    if (occlusion.index < 0) return;
+    if (!std::isfinite(occlusion.strength) || occlusion.strength < 0.0 ||
+        occlusion.strength > 1.0) {
+        throw InputError(textures.path, "material '" + out.name +
+                                            "': occlusionTexture.strength must be in [0, 1]");
+    }
+    tinygltf::TextureInfo info;  // the fields map() reads
+    info.index = occlusion.index;
+    info.texCoord = occlusion.texCoord;
+    info.extensions = occlusion.extensions;
+    images.occlusion = textures.map(info, out.name, "occlusionTexture");
+    images.occlusion.encoding = TextureEncoding::Linear;
+    images.occlusion_strength = static_cast<float>(occlusion.strength);
+}
+
 // tinygltf's file system, through read_input_file: buffers and images must be regular files of
 // sane size that `access` allows (its own reader takes a directory for a huge file and reports
 // "out of memory"). Paths are used as written (tinygltf's default expands them with wordexp).
@@ -1242,6 +1260,7 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
     for (size_t i = 0; i < model.materials.size(); ++i) {
         converted.push_back(material_from_gltf(model.materials[i], i, path));
         attach_gltf_images(converted.back(), model.materials[i], textures);
+        attach_gltf_pbr_images(converted.back(), model.materials[i], textures);
     }
     GltfBuilder builder(model, path, materials);
     materials.insert(materials.end(), converted.begin(), converted.end());

@@ -9,6 +9,7 @@
 #include "apps/scene/mesh_loader.h"
 #include "core/error.h"
 #include "core/math.h"
+#include "core/scene_bounds.h"
 #include "shading/directional_light.h"
 
 namespace rayo {
@@ -26,22 +27,12 @@ struct BoundingSphere {
     float radius = 0.0f;
 };
 
-// The box and sphere of the meshes placed directly and of every instance's vertices.
+// The box of everything placed (core/scene_bounds.h, as `rayo info` prints it) and its sphere.
 BoundingSphere bounding_sphere(const Scene& scene) {
     BoundingSphere b;
-    bool first = true;
-    auto extend = [&](const Vec3& p) {
-        b.lower = first ? p : glm::min(b.lower, p);
-        b.upper = first ? p : glm::max(b.upper, p);
-        first = false;
-    };
-    for (const TriangleMesh& mesh : scene.meshes) {
-        for (const Vec3& p : mesh.positions) extend(p);
-    }
-    for (const Instance& instance : scene.instances) {
-        for (const TriangleMesh& mesh : scene.groups[instance.group].meshes) {
-            for (const Vec3& p : mesh.positions) extend(Vec3(instance.transform * glm::vec4(p, 1)));
-        }
+    if (const std::optional<Bounds3> box = scene_bounds(scene)) {
+        b.lower = box->lower;
+        b.upper = box->upper;
     }
     b.center = 0.5f * (b.lower + b.upper);
     b.radius = 0.5f * glm::length(b.upper - b.lower);

@@ -287,6 +287,36 @@ TEST_F(CliTest, ModelCamerasAndLightsAreListedAndChosen) {
         << unknown.output;
 }
 
+// The bounds `rayo info` prints are the ones the framing uses: with the objects that instances
+// place (a glTF mesh two nodes use, one of them far from the origin; a JSON group), not only
+// the objects placed directly.
+TEST_F(CliTest, InfoBoundsIncludeInstances) {
+    std::string gltf = kCameraGltf;
+    const std::string nodes = R"("nodes": [{"mesh": 0}, {"camera": 0, "name": "front")";
+    ASSERT_NE(gltf.find(nodes), std::string::npos);
+    gltf.replace(gltf.find(nodes), nodes.size(),
+                 R"("nodes": [{"mesh": 0, "children": [4]}, {"camera": 0, "name": "front")");
+    const std::string last = R"("extensions": {"KHR_lights_punctual": {"light": 0}}}],)";
+    ASSERT_NE(gltf.find(last), std::string::npos);
+    gltf.replace(gltf.find(last), last.size(),
+                 R"("extensions": {"KHR_lights_punctual": {"light": 0}}},
+           {"mesh": 0, "translation": [100, 20, -30]}],)");
+    write("far.gltf", gltf);
+    const CommandResult far = run("info far.gltf");
+    ASSERT_EQ(far.exit_code, 0) << far.output;
+    EXPECT_NE(far.output.find("instances 2\n"), std::string::npos) << far.output;
+    EXPECT_NE(far.output.find("bounds -1 -1 -30  101 21 0\n"), std::string::npos) << far.output;
+
+    write("inst.json", R"({"rayo": 1, "camera": {"width": 32, "height": 24, "eye": [0, 0, 9]},
+        "groups": {"g": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]},
+        "objects": [{"type": "sphere", "center": [0, 3, 0], "radius": 0.5},
+                    {"type": "instance", "of": "g", "transform": {"translate": [-3, 0, 0]}},
+                    {"type": "instance", "of": "g", "transform": {"translate": [10, 0, 0]}}]})");
+    const CommandResult json = run("info inst.json");
+    ASSERT_EQ(json.exit_code, 0) << json.output;
+    EXPECT_NE(json.output.find("bounds -4 -1 -1  11 3.5 1\n"), std::string::npos) << json.output;
+}
+
 TEST_F(CliTest, UnwritableOutputLeavesNothing) {
     write("scene.nff", kSmallNff);
     CommandResult r = run("render scene.nff -o no/such/dir/x.png");

@@ -30,6 +30,10 @@ TEST_F(HelpCli, OverviewListsCommandsAndEveryInputFormat) {
         EXPECT_TRUE(contains(r.output, format)) << format << "\n" << r.output;
     }
     EXPECT_FALSE(contains(r.output, "--max-depth")) << "flags belong to the commands' help";
+    // Model files are framed automatically only without a camera of their own (docs/models.md).
+    EXPECT_TRUE(contains(r.output, "camera and lights when the file has them")) << r.output;
+    EXPECT_TRUE(contains(r.output, "--camera")) << r.output;
+    EXPECT_FALSE(contains(r.output, "model files, framed automatically")) << r.output;
 }
 
 // Each command's help: exit 0, its own usage line and flags, none of another command's.
