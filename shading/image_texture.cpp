@@ -97,12 +97,14 @@ struct ImageTextures::Impl {
         std::unique_ptr<OIIO::Filesystem::IOMemReader> proxy;
         OIIO::TextureSystem::TextureHandle* handle = nullptr;
         bool floating = false;
+        bool alpha = false;  // has an alpha channel
     };
     // One material's use of an image.
     struct Use {
         OIIO::TextureSystem::TextureHandle* handle = nullptr;
         TextureOpt options;
         bool srgb = false;
+        bool alpha = false;
         glm::mat3 transform{1.0f};
     };
 
@@ -110,7 +112,7 @@ struct ImageTextures::Impl {
     float limit_mb = 0.0f;
     std::vector<Entry> entries;
     std::map<const ImageSource*, size_t> index_of;
-    std::vector<std::array<Use, 3>> uses;  // per material, per Slot
+    std::vector<std::array<Use, 6>> uses;  // per material, per Slot
 
     size_t add(const std::shared_ptr<const ImageSource>& source) {
         const auto found = index_of.find(source.get());
@@ -123,10 +125,14 @@ struct ImageTextures::Impl {
         OIIO::ImageSpec config;
         void* proxy = entry.proxy.get();
         config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        // Colour as stored, not premultiplied by alpha (glTF and PNG colours are unassociated;
+        // alpha is coverage for cutouts, docs/models.md).
+        config.attribute("oiio:UnassociatedAlpha", 1);
         system->imagecache()->add_file(name, nullptr, &config);
         entry.handle = system->get_texture_handle(name);
         const OIIO::ImageSpec* spec = system->imagespec(entry.handle, nullptr);
         entry.floating = spec != nullptr && spec->format.is_floating_point();
+        entry.alpha = spec != nullptr && (spec->alpha_channel >= 0 || spec->nchannels == 4);
         index_of.emplace(source.get(), entries.size());
         entries.push_back(std::move(entry));
         return entries.size() - 1;
@@ -143,6 +149,7 @@ struct ImageTextures::Impl {
         use.options.fill = 1.0f;  // alpha of images without one
         use.srgb = map.encoding == TextureEncoding::Srgb ||
                    (map.encoding == TextureEncoding::Auto && !entry.floating);
+        use.alpha = entry.alpha;
         use.transform = map.transform;
         return use;
     }
@@ -166,6 +173,9 @@ ImageTextures::ImageTextures(const std::vector<Material>& materials, float max_m
         impl.uses[m][static_cast<size_t>(Slot::Base)] = impl.use_of(images.base);
         impl.uses[m][static_cast<size_t>(Slot::Specular)] = impl.use_of(images.specular);
         impl.uses[m][static_cast<size_t>(Slot::Emission)] = impl.use_of(images.emission);
+        impl.uses[m][static_cast<size_t>(Slot::Normal)] = impl.use_of(images.normal);
+        impl.uses[m][static_cast<size_t>(Slot::Bump)] = impl.use_of(images.bump);
+        impl.uses[m][static_cast<size_t>(Slot::Cutout)] = impl.use_of(images.cutout.image);
     }
 }
 
@@ -176,6 +186,10 @@ ImageTextures::~ImageTextures() {
 bool ImageTextures::has(uint32_t material, Slot slot) const {
     return material < m_impl->uses.size() &&
            m_impl->uses[material][static_cast<size_t>(slot)].handle != nullptr;
+}
+
+bool ImageTextures::has_alpha(uint32_t material, Slot slot) const {
+    return has(material, slot) && m_impl->uses[material][static_cast<size_t>(slot)].alpha;
 }
 
 glm::vec4 ImageTextures::lookup(uint32_t material, Slot slot, const glm::vec2& uv,
