@@ -37,10 +37,11 @@ size_t attach(RTCScene scene, std::vector<std::unique_ptr<GeometryBinding>>& bin
 }
 
 // Every registered shape type in registry order (make_binding picks its representation), then
-// the meshes: of the scene itself or of a group (core/instance.h).
+// the meshes: of the scene itself or of a group (core/instance.h). Meshes with a cut material
+// (core/cutout.h) get the cutout filters and are counted in `cut_meshes`.
 template <typename Objects>
 size_t attach_objects(RTCScene scene, std::vector<std::unique_ptr<GeometryBinding>>& bindings,
-                      const Objects& objects, const AccelOptions& options) {
+                      const Objects& objects, const AccelOptions& options, size_t& cut_meshes) {
     size_t primitives = 0;
     objects.shapes.for_each([&](const auto& shapes) {
         using S = ShapeOf<decltype(shapes)>;
@@ -50,10 +51,13 @@ size_t attach_objects(RTCScene scene, std::vector<std::unique_ptr<GeometryBindin
         }
     });
     for (size_t m = 0; m < objects.meshes.size(); ++m) {
-        if (objects.meshes[m].triangles.empty()) continue;
-        primitives +=
-            attach(scene, bindings,
-                   make_mesh_binding(objects.meshes[m], static_cast<uint32_t>(m), kTriangleShape));
+        const TriangleMesh& mesh = objects.meshes[m];
+        if (mesh.triangles.empty()) continue;
+        const bool cut = options.cutouts && mesh_has_cutout(mesh, *options.cutouts);
+        cut_meshes += cut ? 1 : 0;
+        primitives += attach(scene, bindings,
+                             make_mesh_binding(mesh, static_cast<uint32_t>(m), kTriangleShape,
+                                               cut ? options.cutouts : nullptr));
     }
     return primitives;
 }
@@ -66,7 +70,8 @@ Accel::Accel(const Scene& scene, const AccelOptions& options) : m_options(option
     }
     const long long bytes_before = embree_bytes_in_use();
     m_rtc_scene = new_rtc_scene(options);
-    m_primitive_count = attach_objects(m_rtc_scene, m_bindings, scene, options);
+    m_primitive_count =
+        attach_objects(m_rtc_scene, m_bindings, scene, options, m_cutout_mesh_count);
     // Height fields traced by grid traversal (docs/heightfields.md): one primitive each here,
     // whatever their cell count.
     for (size_t f = 0; f < scene.heightfields.size(); ++f) {
@@ -96,7 +101,8 @@ Accel::Accel(const Scene& scene, const AccelOptions& options) : m_options(option
         if (group.scene) continue;
         group.scene = new_rtc_scene(options);
         group.primitive_count =
-            attach_objects(group.scene, group.bindings, scene.groups[instance.group], options);
+            attach_objects(group.scene, group.bindings, scene.groups[instance.group], options,
+                           m_cutout_mesh_count);
         rtcCommitScene(group.scene);
         fail_on_embree_error("group scene commit");
         m_stored_primitive_count += group.primitive_count;

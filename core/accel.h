@@ -62,6 +62,9 @@ class Accel {
     size_t primitive_count() const { return m_primitive_count; }
     size_t stored_primitive_count() const { return m_stored_primitive_count; }
     size_t instance_count() const { return m_instance_count; }
+    // Meshes with holes (AccelOptions::cutouts): those with the cutout filters, each instanced
+    // group's once.
+    size_t cutout_mesh_count() const { return m_cutout_mesh_count; }
     // The composite-mode voxel grids (docs/voxels.md): not in the Embree scene; the integrator
     // composites them along its rays (composite_volumes, core/shapes/voxel_grid.h).
     const std::vector<const VoxelGrid*>& volumes() const { return m_volumes; }
@@ -77,6 +80,7 @@ class Accel {
     size_t m_primitive_count = 0;
     size_t m_stored_primitive_count = 0;
     size_t m_instance_count = 0;
+    size_t m_cutout_mesh_count = 0;
     size_t m_embree_bytes = 0;
 };
 

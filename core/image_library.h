@@ -17,7 +17,7 @@
 namespace rayo {
 
 // Bumped whenever a class below changes.
-constexpr int kImageLibraryAbi = 1;
+constexpr int kImageLibraryAbi = 2;
 
 enum class PixelType { Float, Half, UInt8, UInt16 };
 
@@ -91,6 +91,8 @@ class TextureCache {
     virtual Handle add(const std::string& name, const std::string& bytes) = 0;
     virtual bool good(Handle handle) const = 0;
     virtual bool floating_point(Handle handle) const = 0;
+    // Whether the image has an alpha channel (colours are read unassociated: not premultiplied).
+    virtual bool has_alpha(Handle handle) const = 0;
     // Filtered RGBA at (s, t) with the footprint's derivatives; `fill` for missing channels.
     virtual void lookup(Handle handle, TextureWrapMode swrap, TextureWrapMode twrap, float fill,
                         float s, float t, float dsdx, float dtdx, float dsdy, float dtdy,

@@ -60,6 +60,11 @@ void InstanceBinding::parameterize(SurfaceHit& hit) const {
     hit.uv = local.uv;
     hit.dpdu = glm::mat3(m_to_world) * local.dpdu;  // a tangent: mapped by M's linear part
     hit.dpdv = glm::mat3(m_to_world) * local.dpdv;
+    // The vertex tangent is a tangent too; a mirror (det M < 0) flips the frame's handedness,
+    // since (Ma) × (Mb) = det M · M⁻ᵀ(a × b) while the bitangent maps as M·b.
+    const float handedness = glm::determinant(glm::mat3(m_to_world)) < 0.0f ? -1.0f : 1.0f;
+    hit.tangent =
+        glm::vec4(glm::mat3(m_to_world) * glm::vec3(local.tangent), handedness * local.tangent.w);
 }
 
 }  // namespace rayo

@@ -3,6 +3,7 @@
 // (core/shapes/shape.h) through the accel.
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
 
 #include "core/math.h"
 
@@ -37,6 +38,9 @@ struct SurfaceHit {
     glm::vec2 uv{0.0f};
     Vec3 dpdu{0.0f};
     Vec3 dpdv{0.0f};
+    // The mesh's interpolated vertex tangent (TriangleMesh::tangents: xyz, w = ±1 handedness),
+    // filled by Accel::parameterize where all three corners have one; zero otherwise.
+    glm::vec4 tangent{0.0f};
 };
 
 }  // namespace rayo

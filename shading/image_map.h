@@ -3,6 +3,7 @@
 // (encoded bytes, decoded by OpenImageIO from memory), their samplers and texture-coordinate
 // transforms, and how the texels become its coefficients. The lookups: shading/image_texture.h.
 #include <glm/mat3x3.hpp>
+#include <glm/vec4.hpp>
 #include <memory>
 #include <string>
 
@@ -63,17 +64,45 @@ struct PbrImages {
     bool used() const { return metallic_roughness.used() || occlusion.used(); }
 };
 
+// Holes in a surface (docs/models.md, "Cutouts"; glTF alphaMode MASK, MTL map_d): the
+// coverage alpha = factor × the image's alpha (or, with `luminance` and an image without an
+// alpha channel, its luminance; 1 without an image); alpha < cutoff is a hole, for every ray.
+struct MaterialCutout {
+    bool enabled = false;
+    ImageMap image;
+    float factor = 1.0f;
+    float cutoff = 0.5f;
+    bool luminance = false;
+};
+
+// The Rec. 709 luminance of a texel's linear RGB (a grey image's value): heights of bump maps,
+// the coverage of MTL map_d images without alpha.
+inline float texel_luminance(const glm::vec4& texel) {
+    return 0.2126f * texel.x + 0.7152f * texel.y + 0.0722f * texel.z;
+}
+
 // The image textures of a material. `base` drives ka, kd, ks and reflect through their terms
 // (each term unused leaves its coefficient constant); `specular` multiplies ks (MTL map_Ks);
 // `emission` multiplies the emission (glTF emissiveTexture × emissiveFactor, MTL map_Ke × Ke);
-// `pbr` the glTF metallic-roughness and occlusion images.
+// `pbr` the glTF metallic-roughness and occlusion images. `normal` is a
+// tangent-space normal map (glTF normalTexture, MTL norm; its x and y times normal_scale),
+// `bump` a height map (MTL map_bump/bump; heights times bump_scale, -bm): both perturb the
+// shading normal (docs/models.md, "Normal and bump maps").
 struct MaterialImages {
     ImageMap base;
     ImageTerm ka, kd, ks, reflect;
     ImageMap specular;
     ImageMap emission;
     PbrImages pbr;
-    bool any() const { return base.used() || specular.used() || emission.used() || pbr.used(); }
+    ImageMap normal;
+    float normal_scale = 1.0f;
+    ImageMap bump;
+    float bump_scale = 1.0f;
+    MaterialCutout cutout;
+    bool any() const {
+        return base.used() || specular.used() || emission.used() || pbr.used() || normal.used() ||
+               bump.used() || cutout.image.used();
+    }
 };
 
 }  // namespace rayo

@@ -80,12 +80,14 @@ struct ImageTextures::Impl {
         std::shared_ptr<const ImageSource> source;
         TextureCache::Handle handle = nullptr;
         bool floating = false;
+        bool alpha = false;  // has an alpha channel
     };
     // One material's use of an image.
     struct Use {
         TextureCache::Handle handle = nullptr;
         TextureWrapMode swrap = TextureWrapMode::Periodic, twrap = TextureWrapMode::Periodic;
         bool srgb = false;
+        bool alpha = false;
         glm::mat3 transform{1.0f};
     };
 
@@ -102,6 +104,7 @@ struct ImageTextures::Impl {
         entry.source = source;
         entry.handle = system->add(cache_name(*source, entries.size()), source->bytes);
         entry.floating = system->floating_point(entry.handle);
+        entry.alpha = system->has_alpha(entry.handle);
         index_of.emplace(source.get(), entries.size());
         entries.push_back(std::move(entry));
         return entries.size() - 1;
@@ -117,6 +120,7 @@ struct ImageTextures::Impl {
         use.twrap = wrap_mode(map.wrap_t);
         use.srgb = map.encoding == TextureEncoding::Srgb ||
                    (map.encoding == TextureEncoding::Auto && !entry.floating);
+        use.alpha = entry.alpha;
         use.transform = map.transform;
         return use;
     }
@@ -139,6 +143,9 @@ ImageTextures::ImageTextures(const std::vector<Material>& materials, float max_m
         impl.uses[m][static_cast<size_t>(Slot::MetallicRoughness)] =
             impl.use_of(images.pbr.metallic_roughness);
         impl.uses[m][static_cast<size_t>(Slot::Occlusion)] = impl.use_of(images.pbr.occlusion);
+        impl.uses[m][static_cast<size_t>(Slot::Normal)] = impl.use_of(images.normal);
+        impl.uses[m][static_cast<size_t>(Slot::Bump)] = impl.use_of(images.bump);
+        impl.uses[m][static_cast<size_t>(Slot::Cutout)] = impl.use_of(images.cutout.image);
     }
 }
 
@@ -147,6 +154,10 @@ ImageTextures::~ImageTextures() = default;
 bool ImageTextures::has(uint32_t material, Slot slot) const {
     return material < m_impl->uses.size() &&
            m_impl->uses[material][static_cast<size_t>(slot)].handle != nullptr;
+}
+
+bool ImageTextures::has_alpha(uint32_t material, Slot slot) const {
+    return has(material, slot) && m_impl->uses[material][static_cast<size_t>(slot)].alpha;
 }
 
 glm::vec4 ImageTextures::lookup(uint32_t material, Slot slot, const glm::vec2& uv,

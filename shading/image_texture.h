@@ -1,7 +1,7 @@
 #pragma once
 // Image textures (docs/textures.md, "Image textures"): the images a material names (glTF
-// baseColorTexture/emissiveTexture/metallicRoughnessTexture/occlusionTexture, MTL
-// map_Kd/map_Ks/map_Ke, JSON {"image": file}) and one
+// baseColorTexture/emissiveTexture/metallicRoughnessTexture/occlusionTexture/normalTexture, MTL
+// map_Kd/map_Ks/map_Ke/norm/map_bump/map_d, JSON {"image": file}) and one
 // OpenImageIO TextureSystem per render that filters them (mip-mapped, cached, memory bounded).
 #include <cstdint>
 #include <glm/vec2.hpp>
@@ -43,10 +43,21 @@ class ImageTextures {
     // map's transform) with the footprint `width` in uv units (isotropic: the pixel's extent
     // on the surface in texture coordinates); RGB decoded to linear when the image is sRGB.
     // Alpha is 1 for images without one.
-    enum class Slot { Base, Specular, Emission, MetallicRoughness, Occlusion };
-    static constexpr size_t kSlotCount = 5;
+    enum class Slot {
+        Base,
+        Specular,
+        Emission,
+        MetallicRoughness,
+        Occlusion,
+        Normal,
+        Bump,
+        Cutout
+    };
+    static constexpr size_t kSlotCount = 8;
     glm::vec4 lookup(uint32_t material, Slot slot, const glm::vec2& uv, float width) const;
     bool has(uint32_t material, Slot slot) const;
+    // Whether the image of `slot` has an alpha channel (false without an image).
+    bool has_alpha(uint32_t material, Slot slot) const;
 
     size_t texture_count() const;
     ImageTextureStats stats() const;

@@ -7,6 +7,7 @@
 
 #include "shading/media.h"
 #include "shading/metallic_roughness.h"
+#include "shading/normal_mapping.h"
 #include "shading/optics.h"
 #include "shading/phong.h"
 
@@ -114,7 +115,14 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(
         }
     }
     if (m_images && base.images.any()) {
-        p.textured = with_images(hit, base.images, p.material());
+        SurfaceHit surface = hit;
+        m_accel.parameterize(surface);
+        const float width = texture_width(surface);
+        p.textured = with_images(surface, width, base.images, p.material());
+        if (base.images.normal.used() || base.images.bump.used()) {
+            p.normal =
+                mapped_normal(surface, width, base.images, p.entering, p.normal, -ray.direction);
+        }
     }
     if (hit.vertex_color != Vec3(1.0f)) {
         // Vertex colours multiply the (textured) diffuse and ambient colours.
@@ -129,21 +137,52 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(
     return p;
 }
 
-SurfaceCoefficients WhittedIntegrator::with_images(const SurfaceHit& hit,
-                                                   const MaterialImages& images,
-                                                   SurfaceCoefficients c) const {
-    SurfaceHit surface = hit;
-    m_accel.parameterize(surface);
+float WhittedIntegrator::texture_width(const SurfaceHit& surface) const {
     // The footprint: the pixel's spread at the hit's distance, in texture units through the
     // surface's tangents (isotropic: the geometric mean of the two scales).
-    const float world = m_settings.pixel_spread * hit.t;
+    const float world = m_settings.pixel_spread * surface.t;
     const float du = glm::length(surface.dpdu), dv = glm::length(surface.dpdv);
     const float scale = dv > 0.0f ? std::sqrt(du * dv) : du;
-    const float width = scale > 0.0f ? world / scale : 0.0f;
+    return scale > 0.0f ? world / scale : 0.0f;
+}
+
+Vec3 WhittedIntegrator::mapped_normal(const SurfaceHit& surface, float width,
+                                      const MaterialImages& images, bool entering,
+                                      const Vec3& normal, const Vec3& to_eye) const {
+    using Slot = ImageTextures::Slot;
+    // The maps' frames are the surface's: work with the normal on the geometric normal's side.
+    const float side = entering ? 1.0f : -1.0f;
+    Vec3 n = side * normal;
+    if (m_images->has(surface.material, Slot::Normal)) {
+        const glm::vec4 tangent = surface.tangent.w != 0.0f
+                                      ? surface.tangent
+                                      : surface_tangent(n, surface.dpdu, surface.dpdv);
+        const Vec3 texel(m_images->lookup(surface.material, Slot::Normal, surface.uv, width));
+        n = tangent_space_normal(n, tangent, texel, images.normal_scale);
+    }
+    if (m_images->has(surface.material, Slot::Bump)) {
+        // F = bump_scale × the height's luminance; ∂F/∂u, ∂F/∂v by forward differences over
+        // half the footprint (a small fixed step when it is zero), as pbrt 3 does (9.3).
+        const float step = width > 0.0f ? 0.5f * width : 0.0005f;
+        const auto height = [&](const glm::vec2& uv) {
+            const glm::vec4 texel = m_images->lookup(surface.material, Slot::Bump, uv, width);
+            return images.bump_scale * texel_luminance(texel);
+        };
+        const float f = height(surface.uv);
+        const float dfdu = (height(surface.uv + glm::vec2(step, 0.0f)) - f) / step;
+        const float dfdv = (height(surface.uv + glm::vec2(0.0f, step)) - f) / step;
+        n = bump_mapped_normal(n, surface.dpdu, surface.dpdv, dfdu, dfdv);
+    }
+    return face_viewer(side * n, to_eye);
+}
+
+SurfaceCoefficients WhittedIntegrator::with_images(const SurfaceHit& surface, float width,
+                                                   const MaterialImages& images,
+                                                   SurfaceCoefficients c) const {
     using Slot = ImageTextures::Slot;
     Vec3 base_texel(1.0f);
-    if (m_images->has(hit.material, Slot::Base)) {
-        const Vec3 texel(m_images->lookup(hit.material, Slot::Base, surface.uv, width));
+    if (m_images->has(surface.material, Slot::Base)) {
+        const Vec3 texel(m_images->lookup(surface.material, Slot::Base, surface.uv, width));
         if (images.ka.used) c.ka = images.ka.apply(texel);
         if (images.kd.used) c.kd = images.kd.apply(texel);
         if (images.ks.used) c.ks = images.ks.apply(texel);
@@ -151,12 +190,12 @@ SurfaceCoefficients WhittedIntegrator::with_images(const SurfaceHit& hit,
         base_texel = texel;
     }
     if (images.pbr.used())
-        with_pbr_images(hit.material, images.pbr, base_texel, surface.uv, width, c);
-    if (m_images->has(hit.material, Slot::Specular)) {
-        c.ks *= Vec3(m_images->lookup(hit.material, Slot::Specular, surface.uv, width));
+        with_pbr_images(surface.material, images.pbr, base_texel, surface.uv, width, c);
+    if (m_images->has(surface.material, Slot::Specular)) {
+        c.ks *= Vec3(m_images->lookup(surface.material, Slot::Specular, surface.uv, width));
     }
-    if (m_images->has(hit.material, Slot::Emission)) {
-        c.emission *= Vec3(m_images->lookup(hit.material, Slot::Emission, surface.uv, width));
+    if (m_images->has(surface.material, Slot::Emission)) {
+        c.emission *= Vec3(m_images->lookup(surface.material, Slot::Emission, surface.uv, width));
     }
     return c;
 }

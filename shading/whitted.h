@@ -100,14 +100,21 @@ class WhittedIntegrator {
     };
     ShadingPoint prepare(const Ray& ray, const SurfaceHit& hit,
                          const SurfaceCoefficients* medium) const;
-    // The material's image textures at the hit (its texture coordinates from
-    // Accel::parameterize), replacing the coefficients they drive.
-    SurfaceCoefficients with_images(const SurfaceHit& hit, const MaterialImages& images,
+    // The image footprint's width in texture units at a parameterized hit (Accel::parameterize).
+    float texture_width(const SurfaceHit& surface) const;
+    // The material's image textures at a parameterized hit, footprint `width`, replacing the
+    // coefficients they drive.
+    SurfaceCoefficients with_images(const SurfaceHit& surface, float width,
+                                    const MaterialImages& images,
                                     SurfaceCoefficients coefficients) const;
     // The glTF metallic-roughness and occlusion images of material `material` at `uv`
     // (`base_texel`: the base colour image's texel there, 1 without one).
     void with_pbr_images(uint32_t material, const PbrImages& pbr, const Vec3& base_texel,
                          const glm::vec2& uv, float width, SurfaceCoefficients& c) const;
+    // The shading normal (`normal`, on the arriving side) after the material's normal and bump
+    // maps (shading/normal_mapping.h), facing the viewer.
+    Vec3 mapped_normal(const SurfaceHit& surface, float width, const MaterialImages& images,
+                       bool entering, const Vec3& normal, const Vec3& to_eye) const;
     // Which side of the surface a light sample lies on: the side the ray arrived on (the local
     // model), the far side of a translucent surface (diffuse transmission), or neither.
     enum class LightSide { None, Front, Back };

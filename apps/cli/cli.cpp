@@ -692,6 +692,10 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << d.shading.lights.size() << "\n";
     if (r.textures.textures > 0)
         out << "  image textures              " << texture_summary(r) << "\n";
+    if (r.cutout_meshes > 0) {
+        out << "  cutout meshes               " << r.cutout_meshes
+            << " (Embree hit filters: alpha below the cutoff is no hit)\n";
+    }
     out << ""
         << "  max depth                   " << d.settings.whitted.max_depth << "\n"
         << "  time parse                  " << format_duration(parse_s) << "\n"

@@ -35,6 +35,7 @@
 #include "core/scene.h"
 #include "core/scene_limits.h"
 #include "shading/metallic_roughness.h"
+#include "core/shapes/mesh_tangents.h"
 
 namespace rayo {
 
@@ -318,7 +319,9 @@ std::shared_ptr<const ImageSource> model_texture(const std::string& file, const 
 // MTL maps (docs/textures.md): map_Kd multiplies Kd (kd = Kd·texel; the default ambient
 // follows it when Ka equals Kd), map_Ks multiplies Ks, map_Ke multiplies Ke. Paths are relative to
 // the library's folder (backslashes read as slashes); -s and -o scale and offset the coordinates,
-// -clamp clamps them. The maps are sRGB-encoded colour by convention.
+// -clamp clamps them. The three maps are sRGB-encoded colour by convention. norm (a tangent-space
+// normal map), map_bump/bump (a height map, -bm its multiplier) and map_d (a cutout: the image's
+// alpha, or its luminance without one; a hole below 0.5) are linear data (docs/models.md).
 void attach_mtl_images(Material& out, const tinyobj::material_t& m, const std::string& dir,
                        const std::string& path, const FileAccess& access, TextureImageCache& cache,
                        MeshImportStats* stats) {
@@ -347,6 +350,20 @@ void attach_mtl_images(Material& out, const tinyobj::material_t& m, const std::s
     }
     out.images.specular = map_of(m.specular_texname, m.specular_texopt, "map_Ks");
     out.images.emission = map_of(m.emissive_texname, m.emissive_texopt, "map_Ke");
+    // Normal, height and coverage maps hold data, not colour: read linearly (docs/models.md).
+    auto data_map_of = [&](const std::string& name, const tinyobj::texture_option_t& option,
+                           const char* statement) {
+        ImageMap map = map_of(name, option, statement);
+        map.encoding = TextureEncoding::Linear;
+        return map;
+    };
+    out.images.normal = data_map_of(m.normal_texname, m.normal_texopt, "norm");
+    out.images.bump = data_map_of(m.bump_texname, m.bump_texopt, "map_bump");
+    out.images.bump_scale = m.bump_texopt.bump_multiplier;
+    MaterialCutout& cutout = out.images.cutout;
+    cutout.image = data_map_of(m.alpha_texname, m.alpha_texopt, "map_d");
+    cutout.enabled = cutout.image.used();
+    cutout.luminance = true;  // an image without alpha: its luminance
 }
 
 }  // namespace
@@ -511,6 +528,7 @@ TriangleMesh load_obj(const std::string& path, std::vector<Material>& materials,
         }
     }
     const size_t dropped = drop_degenerate_triangles(mesh);
+    complete_tangents(mesh, materials);
     if (stats) {
         stats->degenerate_triangles = dropped;
         stats->file_materials = converted.size();
@@ -534,6 +552,20 @@ Material material_from_gltf(const tinygltf::Material& m, size_t index, const std
         if (!within_scene_magnitude(pbr.baseColorFactor[i]) || pbr.baseColorFactor[i] < 0.0) {
             throw InputError(where, what + "baseColorFactor must be finite and >= 0");
         }
+    }
+    if (pbr.baseColorFactor.size() == 4 &&
+        !(pbr.baseColorFactor[3] >= 0.0 && pbr.baseColorFactor[3] <= 1.0)) {
+        throw InputError(where, what + "baseColorFactor's alpha must be in [0, 1]");
+    }
+    if (m.alphaMode != "OPAQUE" && m.alphaMode != "MASK" && m.alphaMode != "BLEND") {
+        throw InputError(
+            where, what + "alphaMode must be OPAQUE, MASK or BLEND, got '" + m.alphaMode + "'");
+    }
+    if (!(m.alphaCutoff >= 0.0 && std::isfinite(m.alphaCutoff))) {
+        throw InputError(where, what + "alphaCutoff must be finite and >= 0");
+    }
+    if (!std::isfinite(m.normalTexture.scale)) {
+        throw InputError(where, what + "normalTexture's scale must be finite");
     }
     if (!std::isfinite(pbr.metallicFactor) || pbr.metallicFactor < 0.0 ||
         pbr.metallicFactor > 1.0 || !std::isfinite(pbr.roughnessFactor) ||
@@ -636,6 +668,28 @@ std::vector<Vec3> read_vec3(const tinygltf::Model& model, int accessor, const st
         if (!finite(out[i])) {
             throw InputError(path, what + ": element " + std::to_string(i) + " is not finite");
         }
+    }
+    return out;
+}
+
+// TANGENT: VEC4 floats, xyz a unit tangent and w = ±1 the bitangent's sign (glTF 2.0,
+// "Meshes"); a tangent of zero length or a w that is not ±1 (rounded) gives the vertex none
+// (w = 0: computed like a missing one, core/shapes/mesh_tangents.h).
+std::vector<glm::vec4> read_tangents(const tinygltf::Model& model, int accessor,
+                                     const std::string& path, const std::string& what) {
+    const AccessorView view = view_accessor(model, accessor, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                            TINYGLTF_TYPE_VEC4, path, what);
+    std::vector<glm::vec4> out(view.count);
+    for (size_t i = 0; i < view.count; ++i) {
+        float v[4];
+        std::memcpy(v, view.data + i * view.stride, sizeof v);
+        const Vec3 t(v[0], v[1], v[2]);
+        if (!finite(t) || !std::isfinite(v[3])) {
+            throw InputError(path, what + ": element " + std::to_string(i) + " is not finite");
+        }
+        const float length = glm::length(t);
+        const float w = v[3] < 0.0f ? -1.0f : 1.0f;
+        out[i] = length > 0.0f ? glm::vec4(t / length, w) : glm::vec4(0.0f);
     }
     return out;
 }
@@ -771,6 +825,7 @@ struct GltfBuilder {
     GltfNodes* nodes = nullptr;  // cameras and lights, and meshes kept for instancing
     std::vector<std::pair<int, glm::dmat4>> mesh_placements;  // (mesh, world), with instancing
     bool any_uvs = false;
+    bool any_tangents = false;
     size_t shared_degenerate = 0;  // zero-area triangles dropped from shared meshes (once each)
 
     void append_mesh(int mesh_index, const glm::dmat4& world) {
@@ -796,9 +851,10 @@ struct GltfBuilder {
             auto it = shared.find(m);
             if (it == shared.end()) {
                 TriangleMesh flat = std::move(mesh);
-                const bool flat_normals = any_normals, flat_colors = any_colors, flat_uvs = any_uvs;
+                const bool flat_normals = any_normals, flat_colors = any_colors, flat_uvs = any_uvs,
+                           flat_tangents = any_tangents;
                 mesh = TriangleMesh();
-                any_normals = any_colors = any_uvs = false;
+                any_normals = any_colors = any_uvs = any_tangents = false;
                 append_mesh(m, glm::dmat4(1.0));
                 mesh.name = model.meshes[static_cast<size_t>(m)].name.empty()
                                 ? "mesh " + std::to_string(m)
@@ -810,6 +866,7 @@ struct GltfBuilder {
                 any_normals = flat_normals;
                 any_colors = flat_colors;
                 any_uvs = flat_uvs;
+                any_tangents = flat_tangents;
             }
             nodes->placements.push_back({it->second, glm::mat4(world)});
         }
@@ -837,6 +894,13 @@ struct GltfBuilder {
             for (auto& n : piece.normals) {
                 const float length = glm::length(n);
                 n = length > 0.0f ? n / length : Vec3(0.0f);
+            }
+        }
+        const auto tangent = primitive.attributes.find("TANGENT");
+        if (tangent != primitive.attributes.end()) {
+            piece.tangents = read_tangents(model, tangent->second, path, what + " TANGENT");
+            if (piece.tangents.size() != piece.positions.size()) {
+                throw InputError(path, what + ": TANGENT and POSITION counts differ");
             }
         }
         const auto color = primitive.attributes.find("COLOR_0");
@@ -899,6 +963,10 @@ struct GltfBuilder {
             mesh.colors.assign(mesh.positions.size(), Vec3(1.0f));  // white: no colour so far
             any_colors = true;
         }
+        if (!piece.tangents.empty() && !any_tangents) {
+            mesh.tangents.assign(mesh.positions.size(), glm::vec4(0.0f));  // w = 0: none
+            any_tangents = true;
+        }
         if (!piece.uvs.empty() && !any_uvs) {
             mesh.uvs.assign(mesh.positions.size(), glm::vec2(0.0f));  // (0, 0): none so far
             any_uvs = true;
@@ -909,6 +977,14 @@ struct GltfBuilder {
                 mesh.uvs.resize(mesh.positions.size(), glm::vec2(0.0f));
             } else {
                 mesh.uvs.insert(mesh.uvs.end(), piece.uvs.begin(), piece.uvs.end());
+            }
+        }
+        if (any_tangents) {
+            if (piece.tangents.empty()) {
+                mesh.tangents.resize(mesh.positions.size(), glm::vec4(0.0f));
+            } else {
+                mesh.tangents.insert(mesh.tangents.end(), piece.tangents.begin(),
+                                     piece.tangents.end());
             }
         }
         if (any_colors) {
@@ -1000,7 +1076,8 @@ struct GltfTextures {
     // textureInfo -> ImageMap (no image, with a warning, when it cannot be used): the sampler's
     // wrap modes and KHR_texture_transform's offset, rotation and scale,
     // (s, t, 1) = T·R·S·(u, v, 1), R = (cos r, sin r; −sin r, cos r).
-    ImageMap map(const tinygltf::TextureInfo& info, const std::string& material, const char* slot) {
+    template <typename Info>  // tinygltf::TextureInfo, NormalTextureInfo
+    ImageMap map(const Info& info, const std::string& material, const char* slot) {
         ImageMap out;
         if (info.index < 0) return out;
         const std::string what = "material '" + material + "' " + slot;
@@ -1092,6 +1169,26 @@ void attach_gltf_images(Material& out, const tinygltf::Material& m, GltfTextures
         out.images.reflect = ImageTerm{true, gloss * f0_offset, gloss * metallic * factor};
     }
     out.images.emission = textures.map(m.emissiveTexture, out.name, "emissiveTexture");
+    // normalTexture: tangent-space, linear (docs/models.md, "Normal and bump maps").
+    out.images.normal = textures.map(m.normalTexture, out.name, "normalTexture");
+    out.images.normal.encoding = TextureEncoding::Linear;
+    out.images.normal_scale = static_cast<float>(m.normalTexture.scale);
+    // alphaMode MASK (docs/models.md, "Cutouts"): alpha = baseColorFactor.a ×
+    // baseColorTexture.a, a hole below alphaCutoff. BLEND is read as MASK at 0.5 (rayo has no
+    // partial coverage), with a warning.
+    if (m.alphaMode == "MASK" || m.alphaMode == "BLEND") {
+        MaterialCutout& cutout = out.images.cutout;
+        cutout.enabled = true;
+        cutout.image = out.images.base;
+        cutout.factor =
+            pbr.baseColorFactor.size() == 4 ? static_cast<float>(pbr.baseColorFactor[3]) : 1.0f;
+        cutout.cutoff = m.alphaMode == "MASK" ? static_cast<float>(m.alphaCutoff) : 0.5f;
+        if (m.alphaMode == "BLEND") {
+            textures.warn("material '" + out.name +
+                          "': alphaMode BLEND is rendered as MASK with alphaCutoff 0.5 (rayo has "
+                          "no partial coverage)");
+        }
+    }
 }
 
 // metallicRoughnessTexture and occlusionTexture (docs/models.md): linear images, read with the
@@ -1294,6 +1391,10 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
 
     TriangleMesh mesh = std::move(builder.mesh);
     const size_t dropped = drop_degenerate_triangles(mesh);
+    complete_tangents(mesh, materials);
+    if (nodes) {
+        for (TriangleMesh& shared : nodes->shared_meshes) complete_tangents(shared, materials);
+    }
     if (stats) {
         stats->degenerate_triangles = dropped + builder.shared_degenerate;
         stats->file_materials = converted.size();
@@ -1362,8 +1463,26 @@ void transform_mesh(TriangleMesh& mesh, const glm::dmat4& transform) {
         const double length = glm::length(m);
         n = (std::isfinite(length) && length > 0.0) ? Vec3(m / length) : Vec3(0.0f);
     }
+    // Tangents are directions (M·t); a mirror flips the bitangent's sign (the frame's handedness).
+    const float handedness = glm::determinant(linear) < 0.0 ? -1.0f : 1.0f;
+    for (auto& t : mesh.tangents) {
+        if (t.w == 0.0f) continue;
+        const glm::dvec3 m = linear * glm::dvec3(t);
+        const double length = glm::length(m);
+        t = (std::isfinite(length) && length > 0.0) ? glm::vec4(Vec3(m / length), handedness * t.w)
+                                                    : glm::vec4(0.0f);
+    }
     if (glm::determinant(linear) < 0.0) {
         for (auto& t : mesh.triangles) std::swap(t[1], t[2]);  // a mirror reverses the winding
+    }
+}
+
+void complete_tangents(TriangleMesh& mesh, const std::vector<Material>& materials) {
+    for (uint32_t m : mesh.materials) {
+        if (m < materials.size() && materials[m].images.normal.used()) {
+            compute_tangents(mesh);
+            return;
+        }
     }
 }
 

@@ -83,9 +83,15 @@ std::string place_with_line(const std::string& path, const std::string& message)
 void check_mesh_not_empty(const TriangleMesh& mesh, const std::string& path,
                           const std::string& where);
 
-// Applies an affine transform to positions and (by the inverse transpose) normals; a transform
-// that mirrors (negative determinant) also flips the winding so faces keep their orientation.
+// Applies an affine transform to positions, (by the inverse transpose) normals and tangents; a
+// transform that mirrors (negative determinant) also flips the winding so faces keep their
+// orientation, and the tangents' handedness.
 void transform_mesh(TriangleMesh& mesh, const glm::dmat4& transform);
+
+// On a mesh with a normal-mapped material (`materials` indexed as its material ids), computes
+// the tangents the file does not give (core/shapes/mesh_tangents.h); other meshes are left as
+// they are.
+void complete_tangents(TriangleMesh& mesh, const std::vector<Material>& materials);
 
 // Replaces the normals by area-weighted averages of the adjacent faces' normals.
 void compute_vertex_normals(TriangleMesh& mesh);

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/film.h"
 #include "core/render.h"
+#include "shading/cutouts.h"
 #include "shading/radiosity_field.h"
 #include "shading/whitted.h"
 
@@ -107,6 +108,17 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                               static_cast<size_t>(result.threads));
 
+    // Image textures: one texture system for the render, made only when a material names an
+    // image (scenes without keep the integrator's settings bit for bit). Made before the accel:
+    // the cutouts' holes (docs/models.md) are looked up while tracing.
+    std::unique_ptr<ImageTextures> images;
+    const auto& materials = description.shading.materials;
+    if (std::any_of(materials.begin(), materials.end(),
+                    [](const Material& m) { return m.images.any(); })) {
+        images = std::make_unique<ImageTextures>(materials, description.settings.texture_cache_mb);
+    }
+    const MaterialCutouts cutouts(materials, images.get());
+
     auto start = std::chrono::steady_clock::now();
     result.spheres = choose_sphere_method(description, camera);
     // Objects with a mesh form, analytic or as triangles (docs/shape-methods.md): `scene` is the
@@ -116,8 +128,10 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     AccelOptions accel_options;
     accel_options.spheres = result.spheres.spheres;
     accel_options.sphere_math = result.spheres.math;
+    if (cutouts.any()) accel_options.cutouts = &cutouts;
     const Accel accel(scene, accel_options);
     result.bvh_seconds = seconds_since(start);
+    result.cutout_meshes = accel.cutout_mesh_count();
     result.primitives = accel.primitive_count();
     result.instances = accel.instance_count();
     result.stored_primitives = accel.stored_primitive_count();
@@ -150,14 +164,8 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
         radiosity->set_flat(description.settings.gi_view_patches);
     }
 
-    // Image textures: one texture system for the render, made only when a material names an
-    // image (scenes without keep the integrator's settings bit for bit).
-    std::unique_ptr<ImageTextures> images;
     WhittedSettings whitted = description.settings.whitted;
-    const auto& materials = description.shading.materials;
-    if (std::any_of(materials.begin(), materials.end(),
-                    [](const Material& m) { return m.images.any(); })) {
-        images = std::make_unique<ImageTextures>(materials, description.settings.texture_cache_mb);
+    if (images) {
         whitted.pixel_spread =
             camera.pixel_angle() / std::sqrt(static_cast<float>(description.settings.spp));
     }

@@ -21,6 +21,7 @@ struct RenderResult {
     size_t primitives = 0;         // instanced total: each instance counts its group's
     size_t instances = 0;          // Embree instances (core/instance.h)
     size_t stored_primitives = 0;  // each instanced group's primitives once
+    size_t cutout_meshes = 0;      // meshes with holes (docs/models.md, "Cutouts")
     int threads = 0;
     SphereChoice spheres;                   // the sphere method and math that ran, and why
     std::vector<ShapeMethodChoice> shapes;  // the objects' methods, where not analytic by default

@@ -128,6 +128,9 @@ class OiioTextureCache : public TextureCache {
         OIIO::ImageSpec config;
         void* proxy = m_proxies.back().get();
         config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        // Colour as stored, not premultiplied by alpha (glTF and PNG colours are unassociated;
+        // alpha is coverage for cutouts, docs/models.md).
+        config.attribute("oiio:UnassociatedAlpha", 1);
         m_system->imagecache()->add_file(key, nullptr, &config);
         return m_system->get_texture_handle(key);
     }
@@ -135,6 +138,10 @@ class OiioTextureCache : public TextureCache {
     bool floating_point(Handle handle) const override {
         const OIIO::ImageSpec* spec = m_system->imagespec(texture_handle(handle), nullptr);
         return spec != nullptr && spec->format.is_floating_point();
+    }
+    bool has_alpha(Handle handle) const override {
+        const OIIO::ImageSpec* spec = m_system->imagespec(texture_handle(handle), nullptr);
+        return spec != nullptr && (spec->alpha_channel >= 0 || spec->nchannels == 4);
     }
     void lookup(Handle handle, TextureWrapMode swrap, TextureWrapMode twrap, float fill, float s,
                 float t, float dsdx, float dtdx, float dsdy, float dtdy,

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,11 @@ struct TriangleMesh {
     // convention (0, 0) = the image's top-left corner (OBJ's v is flipped on reading); hits get
     // them interpolated by Accel::parameterize.
     std::vector<glm::vec2> uvs;
+    // Empty, or one tangent per position for normal maps (glTF TANGENT, or computed:
+    // core/shapes/mesh_tangents.h): xyz the direction of increasing u, w = ±1 the handedness,
+    // the bitangent (the image's "up", decreasing t) being w·(normal × tangent). w = 0 marks a
+    // vertex without one.
+    std::vector<glm::vec4> tangents;
     std::vector<std::array<uint32_t, 3>> triangles;
     std::vector<uint32_t> materials;  // one per triangle
     // Two-sided meshes are hit from both sides (shading faces the normal forward). A one-sided

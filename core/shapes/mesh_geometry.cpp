@@ -28,9 +28,49 @@ void cull_back_faces(const RTCFilterFunctionNArguments* args) {
     }
 }
 
+// The texture coordinates of the point of triangle `prim` at barycentrics (b1, b2): interpolated
+// from the mesh's, or the barycentrics themselves for a mesh without.
+glm::vec2 texture_coordinates(const TriangleMesh& mesh, uint32_t prim, float b1, float b2) {
+    if (mesh.uvs.size() != mesh.positions.size()) return glm::vec2(b1, b2);
+    const auto& tri = mesh.triangles[prim];
+    return (1.0f - b1 - b2) * mesh.uvs[tri[0]] + b1 * mesh.uvs[tri[1]] + b2 * mesh.uvs[tri[2]];
+}
+
+// What the cutout filter needs: the mesh and the test.
+struct CutoutFilter {
+    const TriangleMesh* mesh = nullptr;
+    const CutoutTest* cutouts = nullptr;
+};
+
+// Meshes with holes (core/cutout.h): reject hits where the material has a hole, and, for
+// one-sided meshes, on the back of a triangle (cull_back_faces). Registered only on such meshes.
+void cut_holes(const RTCFilterFunctionNArguments* args) {
+    const auto* filter = static_cast<const CutoutFilter*>(args->geometryUserPtr);
+    const TriangleMesh& mesh = *filter->mesh;
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        const uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
+        if (mesh.one_sided) {
+            const Vec3 direction(RTCRayN_dir_x(args->ray, args->N, i),
+                                 RTCRayN_dir_y(args->ray, args->N, i),
+                                 RTCRayN_dir_z(args->ray, args->N, i));
+            if (glm::dot(triangle_normal(mesh, prim), direction) >= 0.0f) {
+                args->valid[i] = 0;
+                continue;
+            }
+        }
+        const uint32_t material = mesh.materials[prim];
+        if (!filter->cutouts->cuts(material)) continue;
+        const glm::vec2 uv = texture_coordinates(mesh, prim, RTCHitN_u(args->hit, args->N, i),
+                                                 RTCHitN_v(args->hit, args->N, i));
+        if (filter->cutouts->hole(material, uv)) args->valid[i] = 0;
+    }
+}
+
 class MeshBinding : public GeometryBinding {
   public:
-    MeshBinding(const TriangleMesh& mesh, uint32_t mesh_index, uint32_t shape_index)
+    MeshBinding(const TriangleMesh& mesh, uint32_t mesh_index, uint32_t shape_index,
+                const CutoutTest* cutouts)
         : m_mesh(mesh), m_mesh_index(mesh_index), m_shape_index(shape_index) {
         m_geometry = rtcNewGeometry(embree_device(), RTC_GEOMETRY_TYPE_TRIANGLE);
         // Copies into Embree-owned buffers: Embree reads vertices as 16 bytes, so a shared
@@ -51,7 +91,13 @@ class MeshBinding : public GeometryBinding {
             indices[3 * t + 1] = mesh.triangles[t][1];
             indices[3 * t + 2] = mesh.triangles[t][2];
         }
-        if (mesh.one_sided) {
+        if (cutouts) {
+            m_cutout.mesh = &mesh;
+            m_cutout.cutouts = cutouts;
+            rtcSetGeometryUserData(m_geometry, &m_cutout);
+            rtcSetGeometryIntersectFilterFunction(m_geometry, cut_holes);
+            rtcSetGeometryOccludedFilterFunction(m_geometry, cut_holes);
+        } else if (mesh.one_sided) {
             rtcSetGeometryUserData(m_geometry, const_cast<TriangleMesh*>(&mesh));
             rtcSetGeometryIntersectFilterFunction(m_geometry, cull_back_faces);
             rtcSetGeometryOccludedFilterFunction(m_geometry, cull_back_faces);
@@ -120,7 +166,17 @@ class MeshBinding : public GeometryBinding {
         const float b1 = hit.uv.x, b2 = hit.uv.y;
         const glm::vec2 &t0 = m_mesh.uvs[tri[0]], &t1 = m_mesh.uvs[tri[1]],
                         &t2 = m_mesh.uvs[tri[2]];
-        hit.uv = (1.0f - b1 - b2) * t0 + b1 * t1 + b2 * t2;
+        hit.uv = texture_coordinates(m_mesh, hit.primitive, b1, b2);
+        if (m_mesh.tangents.size() == m_mesh.positions.size()) {
+            const glm::vec4 &a = m_mesh.tangents[tri[0]], &b = m_mesh.tangents[tri[1]],
+                            &c = m_mesh.tangents[tri[2]];
+            // Interpolated where all three corners have one (w = 0 marks a corner without);
+            // the handedness is the first corner's (a mirrored seam has split vertices).
+            if (a.w != 0.0f && b.w != 0.0f && c.w != 0.0f) {
+                hit.tangent = glm::vec4(
+                    (1.0f - b1 - b2) * glm::vec3(a) + b1 * glm::vec3(b) + b2 * glm::vec3(c), a.w);
+            }
+        }
         // The tangents solve [e1 e2] = [∂p/∂u ∂p/∂v]·[Δuv1 Δuv2] (pbrt 3, section 3.6.2); a
         // triangle whose texture coordinates are collinear has none: the edges stand in.
         const glm::vec2 d1 = t1 - t0, d2 = t2 - t0;
@@ -139,14 +195,28 @@ class MeshBinding : public GeometryBinding {
     const TriangleMesh& m_mesh;
     uint32_t m_mesh_index;
     uint32_t m_shape_index;
+    CutoutFilter m_cutout;
     RTCGeometry m_geometry = nullptr;
 };
 
 }  // namespace
 
 std::unique_ptr<GeometryBinding> make_mesh_binding(const TriangleMesh& mesh, uint32_t mesh_index,
-                                                   uint32_t shape_index) {
-    return std::make_unique<MeshBinding>(mesh, mesh_index, shape_index);
+                                                   uint32_t shape_index,
+                                                   const CutoutTest* cutouts) {
+    return std::make_unique<MeshBinding>(mesh, mesh_index, shape_index, cutouts);
+}
+
+bool mesh_has_cutout(const TriangleMesh& mesh, const CutoutTest& cutouts) {
+    uint32_t last = 0;
+    bool known = false;
+    for (uint32_t material : mesh.materials) {
+        if (known && material == last) continue;
+        if (cutouts.cuts(material)) return true;
+        last = material;
+        known = true;
+    }
+    return false;
 }
 
 }  // namespace rayo
