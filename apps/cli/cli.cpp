@@ -652,6 +652,17 @@ std::string texture_summary(const RenderResult& r) {
     return text.str();
 }
 
+// Where the camera stands and looks: "eye X Y Z, look_at X Y Z, up X Y Z" (the image's
+// rayo:camera metadata, the `view` lines of `rayo info` and --stats): with the field of view,
+// what another renderer needs to show the same view (scripts/model_gallery.sh).
+std::string view_text(const CameraDesc& cam) {
+    std::ostringstream text;
+    text << "eye " << cam.eye.x << " " << cam.eye.y << " " << cam.eye.z << ", look_at "
+         << cam.look_at.x << " " << cam.look_at.y << " " << cam.look_at.z << ", up " << cam.up.x
+         << " " << cam.up.y << " " << cam.up.z;
+    return text.str();
+}
+
 void print_stats_table(std::ostream& out, const SceneDescription& d, const RenderResult& r,
                        double parse_s, double write_s, bool streamed) {
     const RayCounters& c = r.counters;
@@ -662,6 +673,12 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << ", " << d.settings.spp << " spp, tile " << d.settings.tile_size << "\n"
         << "  camera                      " << projection_name(d.scene.camera.projection)
         << (d.scene.camera.lens_radius > 0.0f ? ", thin lens" : "") << "\n"
+        << "  view                        " << view_text(d.scene.camera);
+    if (d.scene.camera.projection == Projection::Perspective) {
+        const Camera camera = Camera::create(d.scene.camera, d.source + "#/camera");
+        out << ", fov " << camera.hfov_degrees() << "x" << camera.vfov_degrees() << " degrees";
+    }
+    out << "\n"
         << "  antialiasing                " << aa_summary(d.settings) << "\n"
         << "  threads                     " << r.threads << "\n"
         << "  sphere method               " << sphere_method_name(r.spheres.spheres) << " ("
@@ -789,12 +806,8 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     TileDistribution* const ranks = distribution ? &*distribution : nullptr;
 
     OutputOptions options = args.output_options;
-    std::ostringstream camera_text;
-    camera_text << "eye " << cam.eye.x << " " << cam.eye.y << " " << cam.eye.z << ", look_at "
-                << cam.look_at.x << " " << cam.look_at.y << " " << cam.look_at.z << ", up "
-                << cam.up.x << " " << cam.up.y << " " << cam.up.z;
     options.metadata["rayo:scene"] = d.source;
-    options.metadata["rayo:camera"] = camera_text.str();
+    options.metadata["rayo:camera"] = view_text(cam);
     if (d.settings.aa == AntiAliasing::Adaptive) {
         options.metadata["rayo:antialiasing"] = aa_summary(d.settings);
     } else {
@@ -1170,7 +1183,8 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
     const Camera camera = Camera::create(d.scene.camera, d.source + "#/camera");
     out << "scene " << d.source << "\n"
         << "resolution " << camera.width() << "x" << camera.height() << "\n"
-        << "fov " << camera.hfov_degrees() << "x" << camera.vfov_degrees() << " degrees\n";
+        << "fov " << camera.hfov_degrees() << "x" << camera.vfov_degrees() << " degrees\n"
+        << "view " << view_text(camera.desc()) << "\n";
     for (const auto& [name, count] : d.scene.shape_counts()) out << name << " " << count << "\n";
     out << "meshes " << d.scene.meshes.size() << "\n"
         << "triangles " << d.scene.triangle_count() << "\n"
