@@ -58,6 +58,13 @@ mkdir -p "$out"
 [[ -n "$figures" ]] && mkdir -p "$figures"
 models=/usr/share/assimp/models
 font=/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
+# Runs COMMAND..., writing its peak memory to TIME_FILE through GNU time when it is there
+# (Debian package `time`).
+run_timed() {  # TIME_FILE COMMAND...
+    local time_file=$1
+    shift
+    if [[ -x /usr/bin/time ]]; then /usr/bin/time -f "peak_rss_kb %M" -o "$time_file" "$@"; else "$@"; fi
+}
 
 # name | what it shows | the model file | rayo's flags beyond size and output | Blender's file
 assets=(
@@ -71,15 +78,24 @@ assets=(
 )
 
 # The value after "LABEL" on rayo's --stats table (trimmed), or "-".
-stat() {
+stat_value() {
     local v
     v=$(sed -n "s/^  $2 *//p" "$1" | head -1)
     echo "${v:--}"
 }
 
+# IMAGE TEXT OUTPUT: the image as RGB with TEXT in its top left corner (when the font is there).
+label() {
+    if [[ -f "$font" ]]; then
+        oiiotool "$1" --ch R,G,B --text:x=8:y=22:size=18:color=1,1,1:font="$font" "$2" -o "$3"
+    else
+        oiiotool "$1" --ch R,G,B -o "$3"
+    fi
+}
+
 table="$out/gallery.md"
 {
-    echo "| model | file | triangles | parse | BVH | render | rayo wall | peak RSS | image textures (cache) | Cycles |"
+    echo "| model | file | triangles | parse | BVH | render | rayo wall | peak RSS | image textures, cache used | Cycles |"
     echo "|---|---|---|---|---|---|---|---|---|---|"
 } > "$table"
 commands="$out/commands.txt"
@@ -94,23 +110,24 @@ for entry in "${assets[@]}"; do
     fi
     log="$out/$name.log"
     png="$out/${name}_rayo.png"
-    # shellcheck disable=SC2086  # flags are words
-    command_text="rayo render $file $flags --width $size --height $size --stats -o $png"
-    echo "$command_text" >> "$commands"
-    start=$(date +%s.%N)
+    echo "rayo render $file $flags --width $size --height $size --threads $threads --stats -o $png" |
+        tr -s ' ' >> "$commands"
+    start=$(date +%s%N)
     # shellcheck disable=SC2086
-    /usr/bin/time -f "peak_rss_kb %M" -o "$out/$name.time" \
-        "$rayo" render "$file" $flags --width "$size" --height "$size" --threads "$threads" \
+    run_timed "$out/$name.time" "$rayo" render "$file" $flags --width "$size" --height "$size" --threads "$threads" \
         --stats -o "$png" > "$log" 2>&1 || { echo "model_gallery.sh: $name: rayo failed, see $log" >&2; cat "$log" >&2; continue; }
-    wall=$(echo "$(date +%s.%N) - $start" | bc)
-    rss=$(sed -n 's/^peak_rss_kb //p' "$out/$name.time")
+    wall_ms=$((($(date +%s%N) - start) / 1000000))
+    rss=$(sed -n 's/^peak_rss_kb //p' "$out/$name.time" 2>/dev/null || true)
+    rss=${rss:+$((rss / 1024)) MB}
     "$rayo" info "$file" > "$out/$name.info"
     triangles=$(sed -n 's/^triangles //p' "$out/$name.info")
     instanced=$(sed -n 's/^instanced_objects //p' "$out/$name.info")
     [[ -n "$instanced" ]] && triangles="$triangles + $instanced instanced"
-    textures=$(stat "$log" "image textures")
-    view=$(stat "$log" "view")
-    echo "$name: $view"
+    # "N image(s) (... encoded, ... decoded), cache X MB used, peak Y MB, limit Z MB", shortened
+    textures=$(stat_value "$log" "image textures" |
+        sed -E 's/^([0-9]+) image\(s\).*cache ([0-9.]+ MB) used, peak ([0-9.]+ MB).*/\1, cache \2 (peak \3)/')
+    view=$(stat_value "$log" "view")
+    echo "$name ($what): $view"
 
     cycles="-"
     pair_inputs=("$png")
@@ -131,12 +148,12 @@ for entry in "${assets[@]}"; do
         # No emitter or file light: rayo's ambient term (ka = 0.1 base colour for glTF) as a
         # uniform environment of radiance 0.1; the Cornell box has no ambient (no Ka).
         if [[ ${#suns[@]} -gt 0 ]]; then extra+=(--ambient 0.1); else extra+=(--ambient 0); fi
-        start=$(date +%s.%N)
+        start=$(date +%s%N)
         if nice -n 10 blender -b --factory-startup -t "$threads" -P "$here/model_gallery_blender.py" -- \
             --model "${reference:-$file}" --out "$ref" --size "$size" --samples "$samples" \
             "--eye=$ex,$ey,$ez" "--look-at=$lx,$ly,$lz" "--up=$ux,$uy,$uz" "--vfov=$vfov" \
             "${suns[@]}" "${extra[@]}" > "$out/${name}_blender.log" 2>&1 && [[ -f "$ref" ]]; then
-            cycles="$(printf '%.1f' "$(echo "$(date +%s.%N) - $start" | bc)") s"
+            cycles="$((($(date +%s%N) - start) / 1000000000)) s"
             pair_inputs+=("$ref")
         else
             echo "model_gallery.sh: $name: Blender failed, see $out/${name}_blender.log" >&2
@@ -145,13 +162,6 @@ for entry in "${assets[@]}"; do
     fi
 
     # Side by side (rayo left), labelled when the DejaVu font is there.
-    label() {  # IMAGE TEXT OUTPUT
-        if [[ -f "$font" ]]; then
-            oiiotool "$1" --ch R,G,B --text:x=8:y=22:size=18:color=1,1,1:font="$font" "$2" -o "$3"
-        else
-            oiiotool "$1" --ch R,G,B -o "$3"
-        fi
-    }
     label "$png" "rayo" "$out/.l.png"
     pair=("$out/.l.png")
     if [[ ${#pair_inputs[@]} -gt 1 ]]; then
@@ -173,10 +183,11 @@ for entry in "${assets[@]}"; do
 
     short=${file#"$models/"}
     short=${short#"$root/"}
-    printf '| %s | `%s` | %s | %s | %s | %s | %.2f s | %s MB | %s | %s |\n' \
-        "$name" "$short${flags:+ $flags}" "$triangles" "$(stat "$log" "time parse")" \
-        "$(stat "$log" "time BVH build")" "$(stat "$log" "time render")" "$wall" \
-        "$((rss / 1024))" "${textures}" "$cycles" >> "$table"
+    # shellcheck disable=SC2016  # the backquotes are Markdown
+    printf '| %s | `%s` | %s | %s | %s | %s | %d.%02d s | %s | %s | %s |\n' \
+        "$name" "$short${flags:+ $flags}" "$triangles" "$(stat_value "$log" "time parse")" \
+        "$(stat_value "$log" "time BVH build")" "$(stat_value "$log" "time render")" \
+        $((wall_ms / 1000)) $((wall_ms % 1000 / 10)) "${rss:--}" "$textures" "$cycles" >> "$table"
 done
 
 echo "model_gallery.sh: $out/gallery.md:"
