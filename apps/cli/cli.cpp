@@ -163,9 +163,10 @@ render options:
 )";
 
 const char* const kInfoHelp = R"(usage: rayo info SCENE
-  load SCENE and print what it contains: resolution and field of view, objects by kind,
-  meshes, triangles, vertices, materials, lights, bounds and the load's warnings (a model file
-  without the ground square of its framing); no options
+  load SCENE and print what it contains: resolution, field of view and view (eye, look_at,
+  up: a model's automatic framing), objects by kind, meshes, triangles, vertices, materials,
+  lights, bounds and the load's warnings (a model file without the ground square of its
+  framing); no options
 
 )";
 
@@ -652,6 +653,40 @@ std::string texture_summary(const RenderResult& r) {
     return text.str();
 }
 
+// One line of `rayo info` (and of --stats for a model file) about a light: its type, place or
+// direction and intensity.
+std::string describe_light(const Light& light) {
+    std::ostringstream out;
+    auto vec = [&](const Vec3& v) { out << v.x << " " << v.y << " " << v.z; };
+    if (const auto* l = std::get_if<PointLight>(&light)) {
+        out << "point position ";
+        vec(l->position);
+        out << " color ";
+        vec(l->color);
+        out << " intensity " << l->intensity;
+    } else if (const auto* l = std::get_if<SpotLight>(&light)) {
+        out << "spot position ";
+        vec(l->position);
+        out << " direction ";
+        vec(l->direction);
+        out << " cone " << glm::degrees(std::acos(l->cos_inner)) << "-"
+            << glm::degrees(std::acos(l->cos_outer)) << " degrees color ";
+        vec(l->color);
+        out << " intensity " << l->intensity;
+    } else if (const auto* l = std::get_if<DirectionalLight>(&light)) {
+        out << "directional direction ";
+        vec(l->direction);
+        out << " color ";
+        vec(l->color);
+        out << " intensity " << l->intensity;
+    } else if (const auto* l = std::get_if<AreaLight>(&light)) {
+        out << "area";
+        if (l->mesh) out << " triangles " << l->mesh->size();
+        out << " area " << l->area() << " samples " << l->samples;
+    }
+    return out.str();
+}
+
 // Where the camera stands and looks: "eye X Y Z, look_at X Y Z, up X Y Z" (the image's
 // rayo:camera metadata, the `view` lines of `rayo info` and --stats): with the field of view,
 // what another renderer needs to show the same view (scripts/model_gallery.sh).
@@ -701,6 +736,12 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
     }
     out << "  materials, lights           " << d.shading.materials.size() << ", "
         << d.shading.lights.size() << "\n";
+    // A model file's lights by name (the automatic key and fill, the file's, its emitters), as
+    // the render used them (--view-dir turns the key and fill with the camera).
+    for (size_t i = 0; i < d.light_names.size() && i < d.shading.lights.size(); ++i) {
+        out << "  light " << std::left << std::setw(22) << i << std::right << "'"
+            << d.light_names[i] << "' " << describe_light(d.shading.lights[i]) << "\n";
+    }
     if (r.textures.textures > 0)
         out << "  image textures              " << texture_summary(r) << "\n";
     out << ""
@@ -1139,39 +1180,6 @@ std::optional<Bounds3> direct_bounds(const Scene& scene) {
     for (const HeightField& h : scene.heightfields) extend(h.bounds());
     for (const VoxelGrid& v : scene.voxels) extend(v.bounds());
     return box;
-}
-
-// One line of `rayo info` about a light: its type, place or direction and intensity.
-std::string describe_light(const Light& light) {
-    std::ostringstream out;
-    auto vec = [&](const Vec3& v) { out << v.x << " " << v.y << " " << v.z; };
-    if (const auto* l = std::get_if<PointLight>(&light)) {
-        out << "point position ";
-        vec(l->position);
-        out << " color ";
-        vec(l->color);
-        out << " intensity " << l->intensity;
-    } else if (const auto* l = std::get_if<SpotLight>(&light)) {
-        out << "spot position ";
-        vec(l->position);
-        out << " direction ";
-        vec(l->direction);
-        out << " cone " << glm::degrees(std::acos(l->cos_inner)) << "-"
-            << glm::degrees(std::acos(l->cos_outer)) << " degrees color ";
-        vec(l->color);
-        out << " intensity " << l->intensity;
-    } else if (const auto* l = std::get_if<DirectionalLight>(&light)) {
-        out << "directional direction ";
-        vec(l->direction);
-        out << " color ";
-        vec(l->color);
-        out << " intensity " << l->intensity;
-    } else if (const auto* l = std::get_if<AreaLight>(&light)) {
-        out << "area";
-        if (l->mesh) out << " triangles " << l->mesh->size();
-        out << " area " << l->area() << " samples " << l->samples;
-    }
-    return out.str();
 }
 
 int run_info(const std::vector<std::string>& args, std::ostream& out) {

@@ -90,6 +90,11 @@ TEST_F(ModelViewCli, StatsPrintTheRenderedView) {
     EXPECT_NE(stats_view.find(info_view + ", fov 40x40 degrees"), std::string::npos)
         << stats_view << "\n"
         << info.output;
+    // The lights the render used, as `rayo info` lists them: the key and fill of this view.
+    const std::string key = line_after(info.output, "light 0 ");
+    ASSERT_NE(key.find("'key' directional direction "), std::string::npos) << info.output;
+    const std::string key_light = key.substr(key.find("'key'"));
+    EXPECT_NE(square.output.find(key_light), std::string::npos) << square.output;
 
     const CommandResult back =
         run("render box.obj --view-dir 0,0,-1 --width 16 --height 8 --stats -o b.png");
@@ -103,6 +108,9 @@ TEST_F(ModelViewCli, StatsPrintTheRenderedView) {
     expect_framing(v, from_behind, 40.0);
     EXPECT_NE(text.find("x40 degrees"), std::string::npos) << text;
     EXPECT_EQ(text.find("fov 40x40"), std::string::npos) << "a 2:1 image is wider: " << text;
+    // The key light turns with the view: not the default view's.
+    EXPECT_NE(back.output.find("'key' directional direction "), std::string::npos) << back.output;
+    EXPECT_EQ(back.output.find(key_light), std::string::npos) << back.output;
 }
 
 }  // namespace
