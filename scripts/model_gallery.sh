@@ -74,6 +74,7 @@ assets=(
   "engine_draco|Draco-compressed glTF (KHR_draco_mesh_compression), the file's camera, 52 instances|$models/glTF2/draco/2CylinderEngine.gltf||$models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"
   "spider|OBJ + MTL with map_Kd (JPEG textures)|$models/OBJ/spider.obj||"
   "wuson|PLY scan-like mesh (per-face normals)|$models/PLY/Wuson.ply||"
+  "clearcoat|glTF with metallicRoughnessTexture, normal maps, an emissive texture (the labels) and KHR_materials_clearcoat|$models/glTF2/ClearCoat-glTF/ClearCoatTest.gltf|--auto-lights|"
   "cornell|Cornell box OBJ lit by its own emitter (MTL Ke)|$root/scenes/meshes/cornell_box.obj|--view-dir 0,0,-1 --no-ground|"
 )
 
@@ -138,11 +139,11 @@ for entry in "${assets[@]}"; do
             sed -E 's/eye ([^ ]+) ([^ ]+) ([^,]+), look_at ([^ ]+) ([^ ]+) ([^,]+), up ([^ ]+) ([^ ]+) ([^,]+),.*/\1 \2 \3 \4 \5 \6 \7 \8 \9/')
         vfov=$(echo "$view" | sed -E 's/.*fov [^x]+x([0-9.eE+-]+) degrees.*/\1/')
         suns=()
-        # rayo's lights as `rayo info` lists them: directional ones (the automatic key and
-        # fill) become Cycles suns; the Cornell box's emitter is imported with the OBJ.
+        # rayo's lights as --stats lists them: directional ones (the automatic key and fill)
+        # become Cycles suns; emitters (the Cornell box's Ke) come with the imported file.
         while read -r dx dy dz intensity; do
             suns+=("--sun=$dx,$dy,$dz,$intensity")  # "=": values may start with "-"
-        done < <(sed -n -E 's/^light [0-9]+ .* directional direction ([^ ]+) ([^ ]+) ([^ ]+) color [^ ]+ [^ ]+ [^ ]+ intensity ([^ ]+)$/\1 \2 \3 \4/p' "$out/$name.info")
+        done < <(sed -n -E 's/^  light [0-9]+ .* directional direction ([^ ]+) ([^ ]+) ([^ ]+) color [^ ]+ [^ ]+ [^ ]+ intensity ([^ ]+)$/\1 \2 \3 \4/p' "$log")
         extra=()
         [[ " $flags " == *" --no-ground "* ]] && extra+=(--no-ground)
         # No emitter or file light: rayo's ambient term (ka = 0.1 base colour for glTF) as a
