@@ -21,7 +21,8 @@
 # scenes/meshes/cornell_box.obj. Blender 3.4 (Debian 12) reads every file but the Draco one (its
 # glTF importer needs Blender's own libextern_draco.so, which Debian does not ship): the Draco
 # engine's reference is its uncompressed twin, 2CylinderEngine-glTF-Binary/2CylinderEngine.glb.
-# Without rayo's image textures built into its OpenImageIO, needs nothing but rayo and oiiotool.
+# Needs rayo and oiiotool (GNU time for the peak memory, if there); the references need
+# `apt-get install blender python3-numpy` (Blender's glTF importer imports numpy).
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
