@@ -168,10 +168,11 @@ render options:
 )";
 
 const char* const kInfoHelp = R"(usage: rayo info SCENE
-  load SCENE and print what it contains: resolution and field of view, objects by kind,
-  meshes, triangles, vertices, materials, lights, bounds (of everything placed, instances
-  included: the box the framing of model files uses) and the load's warnings (a model file
-  without the ground square of its framing); no options
+  load SCENE and print what it contains: resolution, field of view and view (eye, look_at,
+  up: a model's automatic framing), objects by kind, meshes, triangles, vertices, materials,
+  lights, bounds (of everything placed, instances included: the box the framing of model files
+  uses) and the load's warnings (a model file without the ground square of its framing); no
+  options
 
 )";
 
@@ -658,6 +659,51 @@ std::string texture_summary(const RenderResult& r) {
     return text.str();
 }
 
+// One line of `rayo info` (and of --stats for a model file) about a light: its type, place or
+// direction and intensity.
+std::string describe_light(const Light& light) {
+    std::ostringstream out;
+    auto vec = [&](const Vec3& v) { out << v.x << " " << v.y << " " << v.z; };
+    if (const auto* l = std::get_if<PointLight>(&light)) {
+        out << "point position ";
+        vec(l->position);
+        out << " color ";
+        vec(l->color);
+        out << " intensity " << l->intensity;
+    } else if (const auto* l = std::get_if<SpotLight>(&light)) {
+        out << "spot position ";
+        vec(l->position);
+        out << " direction ";
+        vec(l->direction);
+        out << " cone " << glm::degrees(std::acos(l->cos_inner)) << "-"
+            << glm::degrees(std::acos(l->cos_outer)) << " degrees color ";
+        vec(l->color);
+        out << " intensity " << l->intensity;
+    } else if (const auto* l = std::get_if<DirectionalLight>(&light)) {
+        out << "directional direction ";
+        vec(l->direction);
+        out << " color ";
+        vec(l->color);
+        out << " intensity " << l->intensity;
+    } else if (const auto* l = std::get_if<AreaLight>(&light)) {
+        out << "area";
+        if (l->mesh) out << " triangles " << l->mesh->size();
+        out << " area " << l->area() << " samples " << l->samples;
+    }
+    return out.str();
+}
+
+// Where the camera stands and looks: "eye X Y Z, look_at X Y Z, up X Y Z" (the image's
+// rayo:camera metadata, the `view` lines of `rayo info` and --stats): with the field of view,
+// what another renderer needs to show the same view (scripts/model_gallery.sh).
+std::string view_text(const CameraDesc& cam) {
+    std::ostringstream text;
+    text << "eye " << cam.eye.x << " " << cam.eye.y << " " << cam.eye.z << ", look_at "
+         << cam.look_at.x << " " << cam.look_at.y << " " << cam.look_at.z << ", up " << cam.up.x
+         << " " << cam.up.y << " " << cam.up.z;
+    return text.str();
+}
+
 void print_stats_table(std::ostream& out, const SceneDescription& d, const RenderResult& r,
                        double parse_s, double write_s, bool streamed) {
     const RayCounters& c = r.counters;
@@ -668,6 +714,12 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << ", " << d.settings.spp << " spp, tile " << d.settings.tile_size << "\n"
         << "  camera                      " << projection_name(d.scene.camera.projection)
         << (d.scene.camera.lens_radius > 0.0f ? ", thin lens" : "") << "\n"
+        << "  view                        " << view_text(d.scene.camera);
+    if (d.scene.camera.projection == Projection::Perspective) {
+        const Camera camera = Camera::create(d.scene.camera, d.source + "#/camera");
+        out << ", fov " << camera.hfov_degrees() << "x" << camera.vfov_degrees() << " degrees";
+    }
+    out << "\n"
         << "  antialiasing                " << aa_summary(d.settings) << "\n"
         << "  threads                     " << r.threads << "\n"
         << "  sphere method               " << sphere_method_name(r.spheres.spheres) << " ("
@@ -690,6 +742,12 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
     }
     out << "  materials, lights           " << d.shading.materials.size() << ", "
         << d.shading.lights.size() << "\n";
+    // A model file's lights by name (the automatic key and fill, the file's, its emitters), as
+    // the render used them (--view-dir turns the key and fill with the camera).
+    for (size_t i = 0; i < d.light_names.size() && i < d.shading.lights.size(); ++i) {
+        out << "  light " << std::left << std::setw(22) << i << std::right << "'"
+            << d.light_names[i] << "' " << describe_light(d.shading.lights[i]) << "\n";
+    }
     if (r.textures.textures > 0)
         out << "  image textures              " << texture_summary(r) << "\n";
     if (r.cutout_meshes > 0) {
@@ -802,12 +860,8 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     TileDistribution* const ranks = distribution ? &*distribution : nullptr;
 
     OutputOptions options = args.output_options;
-    std::ostringstream camera_text;
-    camera_text << "eye " << cam.eye.x << " " << cam.eye.y << " " << cam.eye.z << ", look_at "
-                << cam.look_at.x << " " << cam.look_at.y << " " << cam.look_at.z << ", up "
-                << cam.up.x << " " << cam.up.y << " " << cam.up.z;
     options.metadata["rayo:scene"] = d.source;
-    options.metadata["rayo:camera"] = camera_text.str();
+    options.metadata["rayo:camera"] = view_text(cam);
     if (d.settings.aa == AntiAliasing::Adaptive) {
         options.metadata["rayo:antialiasing"] = aa_summary(d.settings);
     } else {
@@ -1126,39 +1180,6 @@ size_t vertex_count(const Scene& scene) {
     return n;
 }
 
-// One line of `rayo info` about a light: its type, place or direction and intensity.
-std::string describe_light(const Light& light) {
-    std::ostringstream out;
-    auto vec = [&](const Vec3& v) { out << v.x << " " << v.y << " " << v.z; };
-    if (const auto* l = std::get_if<PointLight>(&light)) {
-        out << "point position ";
-        vec(l->position);
-        out << " color ";
-        vec(l->color);
-        out << " intensity " << l->intensity;
-    } else if (const auto* l = std::get_if<SpotLight>(&light)) {
-        out << "spot position ";
-        vec(l->position);
-        out << " direction ";
-        vec(l->direction);
-        out << " cone " << glm::degrees(std::acos(l->cos_inner)) << "-"
-            << glm::degrees(std::acos(l->cos_outer)) << " degrees color ";
-        vec(l->color);
-        out << " intensity " << l->intensity;
-    } else if (const auto* l = std::get_if<DirectionalLight>(&light)) {
-        out << "directional direction ";
-        vec(l->direction);
-        out << " color ";
-        vec(l->color);
-        out << " intensity " << l->intensity;
-    } else if (const auto* l = std::get_if<AreaLight>(&light)) {
-        out << "area";
-        if (l->mesh) out << " triangles " << l->mesh->size();
-        out << " area " << l->area() << " samples " << l->samples;
-    }
-    return out.str();
-}
-
 int run_info(const std::vector<std::string>& args, std::ostream& out) {
     if (args.size() != 1) throw UsageError("info: expected exactly one scene file");
     // A model file is described as it is: without the ground square that framing adds.
@@ -1168,7 +1189,8 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
     const Camera camera = Camera::create(d.scene.camera, d.source + "#/camera");
     out << "scene " << d.source << "\n"
         << "resolution " << camera.width() << "x" << camera.height() << "\n"
-        << "fov " << camera.hfov_degrees() << "x" << camera.vfov_degrees() << " degrees\n";
+        << "fov " << camera.hfov_degrees() << "x" << camera.vfov_degrees() << " degrees\n"
+        << "view " << view_text(camera.desc()) << "\n";
     for (const auto& [name, count] : d.scene.shape_counts()) out << name << " " << count << "\n";
     out << "meshes " << d.scene.meshes.size() << "\n"
         << "triangles " << d.scene.triangle_count() << "\n"
