@@ -16,6 +16,8 @@
 #   --no-blender  rayo only (also when blender is not installed)
 #   --only LIST   only these models (names in the table below)
 #   --figures DIR also write NAME.png, the pair at 256 × 256 each (docs/figures/models/)
+#   --references DIR  take NAME_blender.png from DIR (an earlier run's -o) instead of running
+#                 Blender again (the camera is rayo's framing: the same while it is unchanged)
 #
 # The assets come from Debian's assimp-testmodels (/usr/share/assimp/models) and the project's
 # scenes/meshes/cornell_box.obj. Blender 3.4 (Debian 12) reads every file but the Draco one (its
@@ -35,6 +37,7 @@ threads=2
 blender=auto
 only=""
 figures=""
+references=""
 while [[ $# -gt 0 ]]; do
     case "$1" in
         -o) out=$2; shift 2 ;;
@@ -45,7 +48,8 @@ while [[ $# -gt 0 ]]; do
         --no-blender) blender=no; shift ;;
         --only) only=$2; shift 2 ;;
         --figures) figures=$2; shift 2 ;;
-        -h|--help) sed -n '2,25p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        --references) references=$2; shift 2 ;;
+        -h|--help) sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "model_gallery.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
 done
@@ -133,7 +137,11 @@ for entry in "${assets[@]}"; do
 
     cycles="-"
     pair_inputs=("$png")
-    if [[ $blender == yes ]]; then
+    if [[ -n "$references" && -f "$references/${name}_blender.png" ]]; then
+        [[ "$references" -ef "$out" ]] || cp "$references/${name}_blender.png" "$out/"
+        pair_inputs+=("$out/${name}_blender.png")
+        cycles="earlier run"
+    elif [[ $blender == yes ]]; then
         ref="$out/${name}_blender.png"
         # eye X Y Z, look_at X Y Z, up X Y Z, fov HxV degrees
         read -r ex ey ez lx ly lz ux uy uz < <(echo "$view" |
