@@ -17,6 +17,7 @@
 #include "core/accel.h"
 #include "core/error.h"
 #include "shading/whitted.h"
+#include "tests/scene/gltf_test_writer.h"
 #include "tests/scene/json_error.h"
 #include "tests/scene/scene_test_files.h"
 
@@ -155,51 +156,23 @@ TEST(ImageTextureScene, MissingMapKdIsAWarningNamingFileAndMaterial) {
 // checker PNG beside it; `texture_info` is its baseColorTexture.
 std::string write_gltf_quad(const TempDir& dir, const Json& texture_info,
                             const Json& base_colour = Json::array({1.0, 1.0, 1.0, 1.0})) {
-    const std::vector<float> positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
-    const std::vector<float> uvs = {0, 1, 1, 1, 1, 0, 0, 0};
-    const std::vector<uint16_t> indices = {0, 1, 2, 0, 2, 3};
-    std::vector<uint8_t> bin(48 + 32 + 12);
-    std::memcpy(bin.data(), positions.data(), 48);
-    std::memcpy(bin.data() + 48, uvs.data(), 32);
-    std::memcpy(bin.data() + 80, indices.data(), 12);
+    rayo_test::GltfTestWriter g;
+    const int position = g.positions({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0});
+    const int uv = g.accessor({0, 1, 1, 1, 1, 0, 0, 0}, "VEC2");
+    const int index = g.indices({0, 1, 2, 0, 2, 3});
     Json material = {
         {"name", "checker"},
         {"pbrMetallicRoughness",
          {{"baseColorFactor", base_colour}, {"metallicFactor", 0.0}, {"roughnessFactor", 1.0}}}};
     if (!texture_info.is_null())
         material["pbrMetallicRoughness"]["baseColorTexture"] = texture_info;
-    const Json doc = {
-        {"asset", {{"version", "2.0"}}},
-        {"scene", 0},
-        {"scenes", {{{"nodes", {0}}}}},
-        {"nodes", {{{"mesh", 0}}}},
-        {"meshes",
-         {{{"primitives",
-            {{{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}},
-              {"indices", 2},
-              {"material", 0}}}}}}},
-        {"materials", {material}},
-        {"textures", {{{"source", 0}, {"sampler", 0}}}},
-        {"samplers", {{{"wrapS", 10497}, {"wrapT", 10497}}}},
-        {"images", {{{"uri", "checker.png"}}}},
-        {"buffers",
-         {{{"byteLength", bin.size()},
-           {"uri", "data:application/octet-stream;base64," + rayo_test::base64(bin)}}}},
-        {"bufferViews",
-         {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 48}},
-          {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 32}},
-          {{"buffer", 0}, {"byteOffset", 80}, {"byteLength", 12}}}},
-        {"accessors",
-         {{{"bufferView", 0},
-           {"componentType", 5126},
-           {"count", 4},
-           {"type", "VEC3"},
-           {"min", {0, 0, 0}},
-           {"max", {1, 1, 0}}},
-          {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
-          {{"bufferView", 2}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}}},
-    };
-    return dir.write("quad.gltf", doc.dump());
+    g.node({{"mesh", g.mesh({{"attributes", {{"POSITION", position}, {"TEXCOORD_0", uv}}},
+                             {"indices", index},
+                             {"material", g.push("materials", material)}})}});
+    g.doc()["textures"] = {{{"source", 0}, {"sampler", 0}}};
+    g.doc()["samplers"] = {{{"wrapS", 10497}, {"wrapT", 10497}}};
+    g.doc()["images"] = {{{"uri", "checker.png"}}};
+    return g.write_embedded(dir, "quad.gltf");
 }
 
 // The glTF material's radiance with the base colour `colour` and no texture: what a textured
