@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -22,6 +21,7 @@
 #include "core/error.h"
 #include "shading/cutouts.h"
 #include "shading/whitted.h"
+#include "tests/scene/gltf_test_writer.h"
 #include "tests/scene/scene_test_files.h"
 
 namespace rayo {
@@ -190,52 +190,18 @@ TEST(SurfaceMapsScene, ObjBumpMapTiltsAgainstTheHeightGradient) {
 std::string write_gltf_quad(const TempDir& dir, const Json& material,
                             const std::vector<float>& tangents = {},
                             const std::string& name = "quad.gltf") {
-    const std::vector<float> positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
-    const std::vector<float> normals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
-    const std::vector<float> uvs = {0, 1, 1, 1, 1, 0, 0, 0};
-    const std::vector<uint16_t> indices = {0, 1, 2, 0, 2, 3};
-    std::vector<uint8_t> bin(48 + 48 + 32 + 12 + 4 + 64);
-    std::memcpy(bin.data(), positions.data(), 48);
-    std::memcpy(bin.data() + 48, normals.data(), 48);
-    std::memcpy(bin.data() + 96, uvs.data(), 32);
-    std::memcpy(bin.data() + 128, indices.data(), 12);
-    Json attributes = {{"POSITION", 0}, {"NORMAL", 1}, {"TEXCOORD_0", 2}};
-    if (!tangents.empty()) {
-        std::memcpy(bin.data() + 144, tangents.data(), 64);
-        attributes["TANGENT"] = 4;
-    }
-    const Json doc = {
-        {"asset", {{"version", "2.0"}}},
-        {"scene", 0},
-        {"scenes", {{{"nodes", {0}}}}},
-        {"nodes", {{{"mesh", 0}}}},
-        {"meshes",
-         {{{"primitives", {{{"attributes", attributes}, {"indices", 3}, {"material", 0}}}}}}},
-        {"materials", {material}},
-        {"textures", {{{"source", 0}}, {{"source", 1}}}},
-        {"images", {{{"uri", "normal.png"}}, {{"uri", "alpha.png"}}}},
-        {"buffers",
-         {{{"byteLength", bin.size()},
-           {"uri", "data:application/octet-stream;base64," + rayo_test::base64(bin)}}}},
-        {"bufferViews",
-         {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 48}},
-          {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 48}},
-          {{"buffer", 0}, {"byteOffset", 96}, {"byteLength", 32}},
-          {{"buffer", 0}, {"byteOffset", 128}, {"byteLength", 12}},
-          {{"buffer", 0}, {"byteOffset", 144}, {"byteLength", 64}}}},
-        {"accessors",
-         {{{"bufferView", 0},
-           {"componentType", 5126},
-           {"count", 4},
-           {"type", "VEC3"},
-           {"min", {0, 0, 0}},
-           {"max", {1, 1, 0}}},
-          {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
-          {{"bufferView", 2}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
-          {{"bufferView", 3}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}},
-          {{"bufferView", 4}, {"componentType", 5126}, {"count", 4}, {"type", "VEC4"}}}},
-    };
-    return dir.write(name, doc.dump());
+    rayo_test::GltfTestWriter g;
+    Json attributes = {{"POSITION", g.positions({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0})},
+                       {"NORMAL", g.accessor({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3")},
+                       {"TEXCOORD_0", g.accessor({0, 1, 1, 1, 1, 0, 0, 0}, "VEC2")}};
+    const int index = g.indices({0, 1, 2, 0, 2, 3});
+    if (!tangents.empty()) attributes["TANGENT"] = g.accessor(tangents, "VEC4");
+    g.node({{"mesh", g.mesh({{"attributes", attributes},
+                             {"indices", index},
+                             {"material", g.push("materials", material)}})}});
+    g.doc()["textures"] = {{{"source", 0}}, {{"source", 1}}};
+    g.doc()["images"] = {{{"uri", "normal.png"}}, {{"uri", "alpha.png"}}};
+    return g.write_embedded(dir, name);
 }
 
 Json gltf_material(const Json& extra = Json::object()) {
