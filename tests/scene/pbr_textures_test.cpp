@@ -17,6 +17,7 @@
 #include "apps/scene/renderer.h"
 #include "core/error.h"
 #include "shading/light.h"
+#include "tests/scene/gltf_test_writer.h"
 #include "tests/scene/scene_test_files.h"
 
 namespace rayo {
@@ -46,60 +47,30 @@ void write_halves(const std::string& path, const std::array<unsigned char, 3>& l
 // A glTF file of quads with texture coordinates (one data-URI buffer), each with its material
 // (JSON as the file has it); every texture is an image file beside it.
 struct QuadsGltf {
-    Json root = {{"asset", {{"version", "2.0"}}},
-                 {"scene", 0},
-                 {"scenes", Json::array({Json{{"nodes", Json::array()}}})},
-                 {"nodes", Json::array()},
-                 {"meshes", Json::array()},
-                 {"materials", Json::array()},
-                 {"accessors", Json::array()},
-                 {"bufferViews", Json::array()}};
-    std::vector<uint8_t> buffer;
+    rayo_test::GltfTestWriter g;
 
-    int accessor(const void* data, size_t bytes, int component, size_t count, const char* type) {
-        root["bufferViews"].push_back(
-            {{"buffer", 0}, {"byteOffset", buffer.size()}, {"byteLength", bytes}});
-        const auto* p = static_cast<const uint8_t*>(data);
-        buffer.insert(buffer.end(), p, p + bytes);
-        Json a = {{"bufferView", root["bufferViews"].size() - 1},
-                  {"componentType", component},
-                  {"count", count},
-                  {"type", type}};
-        root["accessors"].push_back(a);
-        return static_cast<int>(root["accessors"].size()) - 1;
-    }
     // Corners a, b, c, d (counter-clockwise seen from the side it faces) with coordinates uv.
     void quad(const std::array<Vec3, 4>& corners, const std::array<glm::vec2, 4>& uv,
               const Json& material) {
-        Vec3 lo = corners[0], hi = corners[0];
-        for (const Vec3& c : corners) lo = glm::min(lo, c), hi = glm::max(hi, c);
-        const int position = accessor(corners.data(), sizeof corners, 5126, 4, "VEC3");
-        root["accessors"][position]["min"] = {lo.x, lo.y, lo.z};
-        root["accessors"][position]["max"] = {hi.x, hi.y, hi.z};
-        const int texcoord = accessor(uv.data(), sizeof uv, 5126, 4, "VEC2");
-        const uint32_t indices[6] = {0, 1, 2, 0, 2, 3};
-        const int index = accessor(indices, sizeof indices, 5125, 6, "SCALAR");
-        root["materials"].push_back(material);
+        std::vector<float> xyz, st;
+        for (const Vec3& c : corners) xyz.insert(xyz.end(), {c.x, c.y, c.z});
+        for (const glm::vec2& t : uv) st.insert(st.end(), {t.x, t.y});
+        const int position = g.positions(xyz);
+        const int texcoord = g.accessor(st, "VEC2");
+        const int index = g.indices({0, 1, 2, 0, 2, 3}, 5125);
         const Json primitive = {{"attributes", {{"POSITION", position}, {"TEXCOORD_0", texcoord}}},
                                 {"indices", index},
-                                {"material", root["materials"].size() - 1}};
-        root["meshes"].push_back({{"primitives", Json::array({primitive})}});
-        root["nodes"].push_back({{"mesh", root["meshes"].size() - 1}});
-        root["scenes"][0]["nodes"].push_back(root["nodes"].size() - 1);
+                                {"material", g.push("materials", material)}};
+        g.node({{"mesh", g.mesh(primitive)}});
     }
     // A texture of the image file `uri`, clamped to its edges (with the default REPEAT the
     // filter would mix the opposite edge in); its index.
     int texture(const std::string& uri) {
-        root["images"].push_back({{"uri", uri}});
-        root["samplers"] = Json::array({Json{{"wrapS", 33071}, {"wrapT", 33071}}});
-        root["textures"].push_back({{"source", root["images"].size() - 1}, {"sampler", 0}});
-        return static_cast<int>(root["textures"].size()) - 1;
+        g.doc()["samplers"] = Json::array({Json{{"wrapS", 33071}, {"wrapT", 33071}}});
+        return g.push("textures", {{"source", g.push("images", {{"uri", uri}})}, {"sampler", 0}});
     }
     std::string write(const TempDir& dir, const std::string& name) {
-        root["buffers"] = {
-            {{"byteLength", buffer.size()},
-             {"uri", "data:application/octet-stream;base64," + rayo_test::base64(buffer)}}};
-        return dir.write(name, root.dump());
+        return g.write_embedded(dir, name);
     }
 };
 
