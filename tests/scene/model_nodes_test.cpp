@@ -7,9 +7,7 @@
 #include <unistd.h>
 
 #include <cmath>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -17,73 +15,27 @@
 #include "apps/scene/model_scene.h"
 #include "apps/scene/renderer.h"
 #include "core/error.h"
+#include "tests/scene/gltf_test_writer.h"
 
 namespace rayo {
 namespace {
 
 using nlohmann::json;
 
-std::string base64(const std::string& bytes) {
-    static const char* const digits =
-        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        uint32_t v = static_cast<unsigned char>(bytes[i]) << 16;
-        if (i + 1 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 1]) << 8;
-        if (i + 2 < bytes.size()) v |= static_cast<unsigned char>(bytes[i + 2]);
-        out += digits[(v >> 18) & 63];
-        out += digits[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? digits[(v >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? digits[v & 63] : '=';
-    }
-    return out;
-}
-
 // A glTF file written by the test: meshes of quads and boxes in one data-URI buffer; nodes,
 // cameras and lights added as JSON.
 struct GltfWriter {
-    json root = {{"asset", {{"version", "2.0"}}},
-                 {"scenes", {{{"nodes", json::array()}}}},
-                 {"scene", 0},
-                 {"nodes", json::array()},
-                 {"meshes", json::array()},
-                 {"accessors", json::array()},
-                 {"bufferViews", json::array()},
-                 {"materials", json::array()}};
-    std::string buffer;
+    rayo_test::GltfTestWriter g;
 
-    int view(const std::string& bytes) {
-        root["bufferViews"].push_back(
-            {{"buffer", 0}, {"byteOffset", buffer.size()}, {"byteLength", bytes.size()}});
-        buffer += bytes;
-        return static_cast<int>(root["bufferViews"].size()) - 1;
-    }
     // A mesh of the given corner positions and triangles, with one material.
     int mesh(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices,
              int material) {
-        std::string p(positions.size() * sizeof(Vec3), '\0');
-        std::memcpy(p.data(), positions.data(), p.size());
-        Vec3 lo = positions[0], hi = positions[0];
-        for (const Vec3& v : positions) lo = glm::min(lo, v), hi = glm::max(hi, v);
-        root["accessors"].push_back({{"bufferView", view(p)},
-                                     {"componentType", 5126},
-                                     {"count", positions.size()},
-                                     {"type", "VEC3"},
-                                     {"min", {lo.x, lo.y, lo.z}},
-                                     {"max", {hi.x, hi.y, hi.z}}});
-        const int position = static_cast<int>(root["accessors"].size()) - 1;
-        std::string i(indices.size() * 4, '\0');
-        std::memcpy(i.data(), indices.data(), i.size());
-        root["accessors"].push_back({{"bufferView", view(i)},
-                                     {"componentType", 5125},
-                                     {"count", indices.size()},
-                                     {"type", "SCALAR"}});
-        const int index = static_cast<int>(root["accessors"].size()) - 1;
-        root["meshes"].push_back({{"primitives",
-                                   {{{"attributes", {{"POSITION", position}}},
-                                     {"indices", index},
-                                     {"material", material}}}}});
-        return static_cast<int>(root["meshes"].size()) - 1;
+        std::vector<float> xyz;
+        for (const Vec3& v : positions) xyz.insert(xyz.end(), {v.x, v.y, v.z});
+        const int position = g.positions(xyz);
+        const int index = g.indices(indices, 5125);
+        return g.mesh(
+            {{"attributes", {{"POSITION", position}}}, {"indices", index}, {"material", material}});
     }
     // A square of side 2·half in the plane z = 0, facing +z (counter-clockwise seen from +z).
     int quad(float half, int material) {
@@ -91,39 +43,29 @@ struct GltfWriter {
                     {0, 1, 2, 0, 2, 3}, material);
     }
     int material(const Vec3& base, const Vec3& emissive = Vec3(0.0f)) {
-        root["materials"].push_back({{"pbrMetallicRoughness",
-                                      {{"baseColorFactor", {base.x, base.y, base.z, 1.0}},
-                                       {"metallicFactor", 0.0},
-                                       {"roughnessFactor", 1.0}}},
-                                     {"emissiveFactor", {emissive.x, emissive.y, emissive.z}}});
-        return static_cast<int>(root["materials"].size()) - 1;
+        return g.push("materials", {{"pbrMetallicRoughness",
+                                     {{"baseColorFactor", {base.x, base.y, base.z, 1.0}},
+                                      {"metallicFactor", 0.0},
+                                      {"roughnessFactor", 1.0}}},
+                                    {"emissiveFactor", {emissive.x, emissive.y, emissive.z}}});
     }
-    int node(json n, bool root_node = true) {
-        root["nodes"].push_back(std::move(n));
-        const int index = static_cast<int>(root["nodes"].size()) - 1;
-        if (root_node) root["scenes"][0]["nodes"].push_back(index);
-        return index;
-    }
+    int node(json n, bool root_node = true) { return g.node(std::move(n), root_node); }
     int camera(const std::string& name, double yfov, double aspect) {
-        root["cameras"].push_back(
-            {{"name", name},
-             {"type", "perspective"},
-             {"perspective", {{"yfov", yfov}, {"aspectRatio", aspect}, {"znear", 0.01}}}});
-        return static_cast<int>(root["cameras"].size()) - 1;
+        return g.push("cameras", {{"name", name},
+                                  {"type", "perspective"},
+                                  {"perspective",
+                                   {{"yfov", yfov}, {"aspectRatio", aspect}, {"znear", 0.01}}}});
     }
     int light(json l) {
-        root["extensions"]["KHR_lights_punctual"]["lights"].push_back(std::move(l));
-        root["extensionsUsed"] = {"KHR_lights_punctual"};
-        return static_cast<int>(root["extensions"]["KHR_lights_punctual"]["lights"].size()) - 1;
+        json& lights = g.doc()["extensions"]["KHR_lights_punctual"]["lights"];
+        lights.push_back(std::move(l));
+        g.doc()["extensionsUsed"] = {"KHR_lights_punctual"};
+        return static_cast<int>(lights.size()) - 1;
     }
-    std::string write(const std::string& name) {
-        root["buffers"] = {{{"byteLength", buffer.size()},
-                            {"uri", "data:application/octet-stream;base64," + base64(buffer)}}};
-        const std::string path = (std::filesystem::temp_directory_path() /
-                                  ("rayo_nodes_" + std::to_string(::getpid()) + "_" + name))
-                                     .string();
-        std::ofstream(path) << root.dump();
-        return path;
+    std::string write(const std::string& name) const {
+        return g.write_embedded((std::filesystem::temp_directory_path() /
+                                 ("rayo_nodes_" + std::to_string(::getpid()) + "_" + name))
+                                    .string());
     }
 };
 
