@@ -11,15 +11,14 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "core/error.h"
+#include "tests/scene/gltf_test_writer.h"
 #include "tests/scene/scene_test_files.h"
 #include "tests/test_helpers.h"
 
@@ -29,26 +28,7 @@ namespace {
 using Json = nlohmann::json;
 using rayo_test::expect_vec3;
 
-class TempDir {
-  public:
-    TempDir() {
-        m_path =
-            std::filesystem::temp_directory_path() /
-            ("rayo_mesh_test_" + std::to_string(::getpid()) + "_" + std::to_string(s_counter++));
-        std::filesystem::create_directories(m_path);
-    }
-    ~TempDir() { std::filesystem::remove_all(m_path); }
-    std::string path() const { return m_path.string(); }
-    std::string write(const std::string& name, const std::string& bytes) const {
-        const auto file = m_path / name;
-        std::ofstream(file, std::ios::binary) << bytes;
-        return file.string();
-    }
-
-  private:
-    std::filesystem::path m_path;
-    static inline int s_counter = 0;
-};
+using rayo_test::TempDir;
 
 template <typename F>
 InputError expect_input_error(F&& f) {
@@ -259,103 +239,30 @@ TEST(MeshLoaderObj, NoTrianglesIsAnError) {
 
 // ---- glTF -----------------------------------------------------------------------------------
 
-using rayo_test::base64;
-
-template <typename T>
-void append_bytes(std::vector<uint8_t>& bin, const std::vector<T>& values) {
-    const size_t start = bin.size();
-    bin.resize(start + values.size() * sizeof(T));
-    std::memcpy(bin.data() + start, values.data(), values.size() * sizeof(T));
-    while (bin.size() % 4 != 0) bin.push_back(0);
-}
+using GltfAsset = rayo_test::GltfTestWriter;
 
 // A glTF document with one mesh of one primitive: a unit right triangle in z = 0 plus a second
 // triangle (1,0,0),(1,1,0),(0,1,0), with +z normals and `index_type` indices; node 0 instances
-// it. The caller adds the buffer (uri or GLB chunk).
-struct GltfAsset {
-    Json doc;
-    std::vector<uint8_t> bin;
-};
-
+// it.
 GltfAsset make_gltf(int index_type) {
     GltfAsset a;
-    const std::vector<float> positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
-    const std::vector<float> normals = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
-    const std::vector<uint32_t> indices = {0, 1, 2, 1, 3, 2};
-    append_bytes(a.bin, positions);
-    const size_t normal_offset = a.bin.size();
-    append_bytes(a.bin, normals);
-    const size_t index_offset = a.bin.size();
-    if (index_type == 5121) {
-        append_bytes(a.bin, std::vector<uint8_t>(indices.begin(), indices.end()));
-    } else if (index_type == 5123) {
-        append_bytes(a.bin, std::vector<uint16_t>(indices.begin(), indices.end()));
-    } else {
-        append_bytes(a.bin, indices);
-    }
-    const int index_size = index_type == 5121 ? 1 : index_type == 5123 ? 2 : 4;
-    a.doc = {
-        {"asset", {{"version", "2.0"}}},
-        {"scene", 0},
-        {"scenes", {{{"nodes", {0}}}}},
-        {"nodes", {{{"mesh", 0}}}},
-        {"meshes",
-         {{{"primitives",
-            {{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}},
-              {"indices", 2},
-              {"material", 0}}}}}}},
-        {"materials",
-         {{{"name", "metal"},
-           {"pbrMetallicRoughness",
-            {{"baseColorFactor", {0.5, 0.25, 1.0, 1.0}},
-             {"metallicFactor", 0.5},
-             {"roughnessFactor", 0.5}}}}}},
-        {"bufferViews",
-         {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 48}},
-          {{"buffer", 0}, {"byteOffset", normal_offset}, {"byteLength", 48}},
-          {{"buffer", 0}, {"byteOffset", index_offset}, {"byteLength", 6 * index_size}}}},
-        {"accessors",
-         {{{"bufferView", 0},
-           {"componentType", 5126},
-           {"count", 4},
-           {"type", "VEC3"},
-           {"min", {0, 0, 0}},
-           {"max", {1, 1, 0}}},
-          {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
-          {{"bufferView", 2}, {"componentType", index_type}, {"count", 6}, {"type", "SCALAR"}}}},
-    };
+    const int position = a.positions({0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0});
+    const int normal = a.accessor({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3");
+    const int index = a.indices({0, 1, 2, 1, 3, 2}, index_type);
+    const int material = a.push("materials", {{"name", "metal"},
+                                              {"pbrMetallicRoughness",
+                                               {{"baseColorFactor", {0.5, 0.25, 1.0, 1.0}},
+                                                {"metallicFactor", 0.5},
+                                                {"roughnessFactor", 0.5}}}});
+    a.node({{"mesh", a.mesh({{"attributes", {{"POSITION", position}, {"NORMAL", normal}}},
+                             {"indices", index},
+                             {"material", material}})}});
     return a;
-}
-
-std::string write_embedded(const TempDir& dir, const std::string& name, GltfAsset a) {
-    a.doc["buffers"] = {{{"byteLength", a.bin.size()},
-                         {"uri", "data:application/octet-stream;base64," + base64(a.bin)}}};
-    return dir.write(name, a.doc.dump());
-}
-
-std::string write_glb(const TempDir& dir, const std::string& name, GltfAsset a) {
-    a.doc["buffers"] = {{{"byteLength", a.bin.size()}}};
-    std::string json = a.doc.dump();
-    while (json.size() % 4 != 0) json += ' ';
-    std::vector<uint8_t> bin = a.bin;
-    while (bin.size() % 4 != 0) bin.push_back(0);
-    std::string out;
-    auto u32 = [&out](uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
-    out += "glTF";
-    u32(2);
-    u32(static_cast<uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
-    u32(static_cast<uint32_t>(json.size()));
-    u32(0x4E4F534Au);  // "JSON"
-    out += json;
-    u32(static_cast<uint32_t>(bin.size()));
-    u32(0x004E4942u);  // "BIN\0"
-    out.append(reinterpret_cast<const char*>(bin.data()), bin.size());
-    return dir.write(name, out);
 }
 
 TEST(MeshLoaderGltf, EmbeddedBufferWithPbrMaterial) {
     TempDir dir;
-    const std::string path = write_embedded(dir, "tri.gltf", make_gltf(5123));
+    const std::string path = make_gltf(5123).write_embedded(dir, "tri.gltf");
     std::vector<Material> materials(1);
     MeshImportStats stats;
     const TriangleMesh mesh = load_gltf(path, materials, "here", &stats);
@@ -386,8 +293,8 @@ TEST(MeshLoaderGltf, RoughnessExtremesClampShininess) {
          std::vector<std::pair<double, float>>{{0.0, 10000.0f}, {1.0, 1.0f}, {0.05, 10000.0f}}) {
         TempDir dir;
         GltfAsset a = make_gltf(5123);
-        a.doc["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = roughness;
-        const std::string path = write_embedded(dir, "r.gltf", a);
+        a.doc()["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = roughness;
+        const std::string path = a.write_embedded(dir, "r.gltf");
         std::vector<Material> materials;
         load_gltf(path, materials, "here");
         EXPECT_FLOAT_EQ(materials.at(0).shininess, expected) << "roughness " << roughness;
@@ -409,9 +316,9 @@ TEST(MeshLoaderGltf, MetalsDoNotDiffuseDielectricsKeepTheirColourRoughMirrorsFad
     for (const Case& c : cases) {
         TempDir dir;
         GltfAsset a = make_gltf(5123);
-        a.doc["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = c.metallic;
-        a.doc["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = c.roughness;
-        const std::string path = write_embedded(dir, "m.gltf", a);
+        a.doc()["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = c.metallic;
+        a.doc()["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = c.roughness;
+        const std::string path = a.write_embedded(dir, "m.gltf");
         std::vector<Material> materials;
         load_gltf(path, materials, "here");
         const Material& m = materials.at(0);
@@ -426,15 +333,15 @@ TEST(MeshLoaderGltf, MetalsDoNotDiffuseDielectricsKeepTheirColourRoughMirrorsFad
 TEST(MeshLoaderGltf, EmissionFromFactorAndStrength) {
     TempDir dir;
     GltfAsset a = make_gltf(5123);
-    a.doc["materials"][0]["emissiveFactor"] = {1.0, 0.5, 0.25};
-    a.doc["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] =
+    a.doc()["materials"][0]["emissiveFactor"] = {1.0, 0.5, 0.25};
+    a.doc()["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] =
         4.0;
-    const std::string path = write_embedded(dir, "e.gltf", a);
+    const std::string path = a.write_embedded(dir, "e.gltf");
     std::vector<Material> materials;
     load_gltf(path, materials, "here");
     expect_vec3(materials.at(0).emission, 4.0f, 2.0f, 1.0f);
-    a.doc["materials"][0]["emissiveFactor"] = {1.0, -0.5, 0.25};
-    const std::string bad = write_embedded(dir, "bad.gltf", a);
+    a.doc()["materials"][0]["emissiveFactor"] = {1.0, -0.5, 0.25};
+    const std::string bad = a.write_embedded(dir, "bad.gltf");
     const InputError error = expect_input_error([&] { load_gltf(bad, materials, "here"); });
     EXPECT_NE(error.message().find("emissiveFactor"), std::string::npos) << error.message();
 }
@@ -443,17 +350,11 @@ TEST(MeshLoaderGltf, VertexColoursFromNormalizedBytes) {
     // COLOR_0 as normalized unsigned-byte VEC4 (alpha ignored), appended after the indices.
     TempDir dir;
     GltfAsset a = make_gltf(5123);
-    const size_t offset = a.bin.size();
     const uint8_t colours[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 51, 102, 255, 0};
-    a.bin.insert(a.bin.end(), colours, colours + 16);
-    a.doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", 16}});
-    a.doc["accessors"].push_back({{"bufferView", 3},
-                                  {"componentType", 5121},
-                                  {"normalized", true},
-                                  {"count", 4},
-                                  {"type", "VEC4"}});
-    a.doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = 3;
-    const std::string path = write_embedded(dir, "c.gltf", a);
+    const int colour = a.accessor(colours, 16, 5121, 4, "VEC4");
+    a.doc()["accessors"][colour]["normalized"] = true;
+    a.doc()["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = colour;
+    const std::string path = a.write_embedded(dir, "c.gltf");
     std::vector<Material> materials;
     const TriangleMesh mesh = load_gltf(path, materials, "here");
     ASSERT_EQ(mesh.colors.size(), 4u);
@@ -463,7 +364,7 @@ TEST(MeshLoaderGltf, VertexColoursFromNormalizedBytes) {
 
 TEST(MeshLoaderGltf, BinaryGlbWithUnsignedByteIndices) {
     TempDir dir;
-    const std::string path = write_glb(dir, "tri.glb", make_gltf(5121));
+    const std::string path = make_gltf(5121).write_glb(dir, "tri.glb");
     std::vector<Material> materials;
     const TriangleMesh mesh = load_gltf(path, materials, "here");
     ASSERT_EQ(mesh.triangle_count(), 2u);
@@ -479,11 +380,11 @@ TEST(MeshLoaderGltf, RequiredExtensionsAreNamedAndRefused) {
     for (const bool binary : {false, true}) {
         TempDir dir;
         GltfAsset a = make_gltf(5123);
-        a.doc["extensionsUsed"] = {"EXT_meshopt_compression", "KHR_materials_ior"};
-        a.doc["extensionsRequired"] = {"KHR_draco_mesh_compression", "EXT_meshopt_compression"};
-        a.doc["accessors"][0].erase("bufferView");
+        a.doc()["extensionsUsed"] = {"EXT_meshopt_compression", "KHR_materials_ior"};
+        a.doc()["extensionsRequired"] = {"KHR_draco_mesh_compression", "EXT_meshopt_compression"};
+        a.doc()["accessors"][0].erase("bufferView");
         const std::string path =
-            binary ? write_glb(dir, "meshopt.glb", a) : write_embedded(dir, "meshopt.gltf", a);
+            binary ? a.write_glb(dir, "meshopt.glb") : a.write_embedded(dir, "meshopt.gltf");
         std::vector<Material> materials;
         const InputError error = expect_input_error([&] { load_gltf(path, materials, "here"); });
         EXPECT_EQ(error.where(), path);
@@ -494,8 +395,8 @@ TEST(MeshLoaderGltf, RequiredExtensionsAreNamedAndRefused) {
     }
     TempDir dir;
     GltfAsset used = make_gltf(5123);
-    used.doc["extensionsUsed"] = {"KHR_materials_ior"};
-    const std::string path = write_embedded(dir, "used.gltf", used);
+    used.doc()["extensionsUsed"] = {"KHR_materials_ior"};
+    const std::string path = used.write_embedded(dir, "used.gltf");
     std::vector<Material> materials;
     EXPECT_EQ(load_gltf(path, materials, "here").triangle_count(), 2u);
 }
@@ -526,29 +427,22 @@ GltfAsset make_draco_gltf() {
     EXPECT_TRUE(encoder.EncodeMeshToBuffer(mesh, &encoded).ok());
 
     GltfAsset a;
-    a.bin.assign(encoded.data(), encoded.data() + encoded.size());
-    const size_t length = a.bin.size();
-    while (a.bin.size() % 4 != 0) a.bin.push_back(0);
-    const Json draco = {{"bufferView", 0},
+    a.doc().erase("scene");
+    a.doc().erase("scenes");
+    a.doc()["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    a.doc()["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    const Json draco = {{"bufferView", a.view(encoded.data(), encoded.size())},
                         {"attributes",
                          {{"POSITION", mesh.attribute(pos)->unique_id()},
                           {"COLOR_0", mesh.attribute(col)->unique_id()}}}};
-    a.doc = {
-        {"asset", {{"version", "2.0"}}},
-        {"extensionsUsed", {"KHR_draco_mesh_compression"}},
-        {"extensionsRequired", {"KHR_draco_mesh_compression"}},
-        {"nodes", {{{"mesh", 0}}}},
-        {"meshes",
-         {{{"primitives",
-            {{{"attributes", {{"POSITION", 0}, {"COLOR_0", 1}}},
-              {"indices", 2},
-              {"extensions", {{"KHR_draco_mesh_compression", draco}}}}}}}}},
-        {"bufferViews", {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", length}}}},
-        {"accessors",
-         {{{"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
-          {{"componentType", 5121}, {"normalized", true}, {"count", 4}, {"type", "VEC3"}},
-          {{"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}}},
-    };
+    a.doc()["accessors"] = {
+        {{"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+        {{"componentType", 5121}, {"normalized", true}, {"count", 4}, {"type", "VEC3"}},
+        {{"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}};
+    a.node({{"mesh", a.mesh({{"attributes", {{"POSITION", 0}, {"COLOR_0", 1}}},
+                             {"indices", 2},
+                             {"extensions", {{"KHR_draco_mesh_compression", draco}}}})}},
+           false);
     return a;
 }
 
@@ -557,7 +451,7 @@ TEST(MeshLoaderGltf, DracoCompressedMeshesDecoded) {
         TempDir dir;
         const GltfAsset a = make_draco_gltf();
         const std::string path =
-            binary ? write_glb(dir, "draco.glb", a) : write_embedded(dir, "draco.gltf", a);
+            binary ? a.write_glb(dir, "draco.glb") : a.write_embedded(dir, "draco.gltf");
         std::vector<Material> materials;
         const TriangleMesh mesh = load_gltf(path, materials, "here");
         ASSERT_EQ(mesh.triangle_count(), 2u) << binary;
@@ -585,26 +479,26 @@ TEST(MeshLoaderGltf, DracoCompressedMeshesDecoded) {
 TEST(MeshLoaderGltf, BadDracoDataNamed) {
     TempDir dir;
     GltfAsset corrupt = make_draco_gltf();
-    std::fill(corrupt.bin.begin() + 8, corrupt.bin.end(), uint8_t{0xAB});  // header kept
+    std::fill(corrupt.bin().begin() + 8, corrupt.bin().end(), uint8_t{0xAB});  // header kept
     std::vector<Material> materials;
-    const std::string c = write_embedded(dir, "corrupt.gltf", corrupt);
+    const std::string c = corrupt.write_embedded(dir, "corrupt.gltf");
     InputError error = expect_input_error([&] { load_gltf(c, materials, "here"); });
     EXPECT_EQ(error.where(), c);
     EXPECT_NE(error.message().find("mesh 0 primitive 0 (KHR_draco_mesh_compression)"),
               std::string::npos)
         << error.message();
     GltfAsset missing = make_draco_gltf();
-    missing.doc["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]
-               ["attributes"]["COLOR_0"] = 77;
-    const std::string m = write_embedded(dir, "missing.gltf", missing);
+    missing.doc()["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]
+                 ["attributes"]["COLOR_0"] = 77;
+    const std::string m = missing.write_embedded(dir, "missing.gltf");
     error = expect_input_error([&] { load_gltf(m, materials, "here"); });
     EXPECT_NE(error.message().find("COLOR_0: the Draco data has no attribute 77"),
               std::string::npos)
         << error.message();
     GltfAsset far = make_draco_gltf();
-    far.doc["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]
-           ["bufferView"] = 5;
-    const std::string f = write_embedded(dir, "far.gltf", far);
+    far.doc()["meshes"][0]["primitives"][0]["extensions"]["KHR_draco_mesh_compression"]
+             ["bufferView"] = 5;
+    const std::string f = far.write_embedded(dir, "far.gltf");
     error = expect_input_error([&] { load_gltf(f, materials, "here"); });
     EXPECT_NE(error.message().find("bufferView 5 does not exist"), std::string::npos)
         << error.message();
@@ -613,9 +507,7 @@ TEST(MeshLoaderGltf, BadDracoDataNamed) {
 TEST(MeshLoaderGltf, ExternalBinWithUnsignedIntIndices) {
     TempDir dir;
     GltfAsset a = make_gltf(5125);
-    dir.write("data.bin", std::string(a.bin.begin(), a.bin.end()));
-    a.doc["buffers"] = {{{"byteLength", a.bin.size()}, {"uri", "data.bin"}}};
-    const std::string path = dir.write("ext.gltf", a.doc.dump());
+    const std::string path = a.write_external(dir, "ext.gltf", "data.bin");
     std::vector<Material> materials;
     const TriangleMesh mesh = load_gltf(path, materials, "here");
     ASSERT_EQ(mesh.triangle_count(), 2u);
@@ -628,13 +520,14 @@ TEST(MeshLoaderGltf, NodeTrsAndMatrixTransformsApplied) {
     // Root: translate (10, 0, 0), rotate 90° about z, scale 2; child: matrix translating by
     // (0, 0, 5). Both instance the mesh.
     const double s = std::sqrt(0.5);
-    a.doc["nodes"] = {{{"mesh", 0},
-                       {"translation", {10, 0, 0}},
-                       {"rotation", {0, 0, s, s}},
-                       {"scale", {2, 2, 2}},
-                       {"children", {1}}},
-                      {{"mesh", 0}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 5, 1}}}};
-    const std::string path = write_embedded(dir, "trs.gltf", a);
+    a.doc()["nodes"] = {
+        {{"mesh", 0},
+         {"translation", {10, 0, 0}},
+         {"rotation", {0, 0, s, s}},
+         {"scale", {2, 2, 2}},
+         {"children", {1}}},
+        {{"mesh", 0}, {"matrix", {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 5, 1}}}};
+    const std::string path = a.write_embedded(dir, "trs.gltf");
     std::vector<Material> materials;
     const TriangleMesh mesh = load_gltf(path, materials, "here");
     ASSERT_EQ(mesh.triangle_count(), 4u);
@@ -649,8 +542,8 @@ TEST(MeshLoaderGltf, NodeTrsAndMatrixTransformsApplied) {
 TEST(MeshLoaderGltf, UnsupportedModeRejected) {
     TempDir dir;
     GltfAsset a = make_gltf(5123);
-    a.doc["meshes"][0]["primitives"][0]["mode"] = 5;  // TRIANGLE_STRIP
-    const std::string path = write_embedded(dir, "strip.gltf", a);
+    a.doc()["meshes"][0]["primitives"][0]["mode"] = 5;  // TRIANGLE_STRIP
+    const std::string path = a.write_embedded(dir, "strip.gltf");
     std::vector<Material> materials;
     const InputError error = expect_input_error([&] { load_gltf(path, materials, "here"); });
     EXPECT_EQ(error.where(), path);
@@ -661,8 +554,8 @@ TEST(MeshLoaderGltf, UnsupportedModeRejected) {
 TEST(MeshLoaderGltf, IndexOutOfRangeRejected) {
     TempDir dir;
     GltfAsset a = make_gltf(5121);
-    a.bin[96 + 4] = 9;  // the fifth index (after 48 bytes of positions and 48 of normals)
-    const std::string path = write_glb(dir, "bad.glb", a);
+    a.bin()[96 + 4] = 9;  // the fifth index (after 48 bytes of positions and 48 of normals)
+    const std::string path = a.write_glb(dir, "bad.glb");
     std::vector<Material> materials;
     const InputError error = expect_input_error([&] { load_gltf(path, materials, "here"); });
     EXPECT_NE(error.message().find("index 9 out of range"), std::string::npos) << error.message();
@@ -671,8 +564,8 @@ TEST(MeshLoaderGltf, IndexOutOfRangeRejected) {
 TEST(MeshLoaderGltf, AccessorBeyondBufferRejected) {
     TempDir dir;
     GltfAsset a = make_gltf(5123);
-    a.doc["accessors"][0]["count"] = 400;
-    const std::string path = write_embedded(dir, "short.gltf", a);
+    a.doc()["accessors"][0]["count"] = 400;
+    const std::string path = a.write_embedded(dir, "short.gltf");
     std::vector<Material> materials;
     const InputError error = expect_input_error([&] { load_gltf(path, materials, "here"); });
     EXPECT_EQ(error.where(), path);
