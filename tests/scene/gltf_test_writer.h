@@ -45,7 +45,7 @@ class GltfTestWriter {
                                   {"count", count},
                                   {"type", type}});
     }
-    // Floats as `type`: count = values / components of the type.
+    // Floats as `type` ("SCALAR" or "VECn"): count = values / n.
     int accessor(const std::vector<float>& values, const char* type) {
         const size_t components = std::string(type) == "SCALAR" ? 1 : size_t(type[3] - '0');
         return accessor(values.data(), values.size() * sizeof(float), 5126,
