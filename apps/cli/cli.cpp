@@ -664,27 +664,27 @@ std::string texture_summary(const RenderResult& r) {
 std::string describe_light(const Light& light) {
     std::ostringstream out;
     auto vec = [&](const Vec3& v) { out << v.x << " " << v.y << " " << v.z; };
+    auto color_and_intensity = [&](const Vec3& color, float intensity) {
+        out << " color ";
+        vec(color);
+        out << " intensity " << intensity;
+    };
     if (const auto* l = std::get_if<PointLight>(&light)) {
         out << "point position ";
         vec(l->position);
-        out << " color ";
-        vec(l->color);
-        out << " intensity " << l->intensity;
+        color_and_intensity(l->color, l->intensity);
     } else if (const auto* l = std::get_if<SpotLight>(&light)) {
         out << "spot position ";
         vec(l->position);
         out << " direction ";
         vec(l->direction);
         out << " cone " << glm::degrees(std::acos(l->cos_inner)) << "-"
-            << glm::degrees(std::acos(l->cos_outer)) << " degrees color ";
-        vec(l->color);
-        out << " intensity " << l->intensity;
+            << glm::degrees(std::acos(l->cos_outer)) << " degrees";
+        color_and_intensity(l->color, l->intensity);
     } else if (const auto* l = std::get_if<DirectionalLight>(&light)) {
         out << "directional direction ";
         vec(l->direction);
-        out << " color ";
-        vec(l->color);
-        out << " intensity " << l->intensity;
+        color_and_intensity(l->color, l->intensity);
     } else if (const auto* l = std::get_if<AreaLight>(&light)) {
         out << "area";
         if (l->mesh) out << " triangles " << l->mesh->size();
