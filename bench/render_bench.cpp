@@ -19,6 +19,7 @@
 #include "bench/bench_main.h"
 #include "core/accel.h"
 #include "core/camera.h"
+#include "core/embree_device.h"
 
 namespace rayo {
 namespace {
@@ -165,7 +166,7 @@ BENCHMARK(RawEmbreeUserStream)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void RawEmbreePoint(benchmark::State& state) {
     const Scene& scene = flake().scene;
-    RTCDevice device = rtcNewDevice(nullptr);
+    RTCDevice device = rtcNewDevice(kEmbreeDeviceConfig);
     RTCScene rtc = rtcNewScene(device);
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
     auto* points = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,

@@ -34,7 +34,7 @@ const char* error_name(RTCError error) {
 struct Device {
     RTCDevice device = nullptr;
     Device() {
-        device = rtcNewDevice(nullptr);
+        device = rtcNewDevice(kEmbreeDeviceConfig);
         if (!device) {
             throw std::runtime_error(std::string("Embree: cannot create a device: ") +
                                      error_name(rtcGetDeviceError(nullptr)));

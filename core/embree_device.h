@@ -8,6 +8,14 @@
 
 namespace rayo {
 
+// The device's configuration. Embree's kernels stop at AVX2: Debian's Embree 3.13.5 AVX-512
+// stream/packet traversal (16-wide, chosen on AVX-512 CPUs) can spin forever inside
+// rtcOccluded1M on an instanced scene, depending on what the process traced before (reproduced:
+// a CSG or instance render, then a glTF scene with instanced meshes, in one process; the same
+// rays with rtcOccluded1 or with the AVX2 kernels finish). Measured on this AMD EPYC (Zen 4):
+// AVX2 within run-to-run noise of AVX-512 on balls_3 and teapot_3 at 2048² (docs/performance.md).
+inline constexpr const char* kEmbreeDeviceConfig = "max_isa=avx2";
+
 RTCDevice embree_device();
 
 // Throws std::runtime_error naming `what`, Embree's error code and message, when the device

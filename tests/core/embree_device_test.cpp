@@ -1,5 +1,6 @@
-// The process's one Embree device: the same device for every caller, and Embree's errors
-// reported with Embree's own message through the error function set at creation.
+// The process's one Embree device: the same device for every caller, its kernels capped at
+// AVX2, and Embree's errors reported with Embree's own message through the error function set
+// at creation.
 #include "core/embree_device.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,17 @@ namespace {
 TEST(EmbreeDevice, OneDevicePerProcess) {
     EXPECT_NE(embree_device(), nullptr);
     EXPECT_EQ(embree_device(), embree_device());
+}
+
+// The device runs Embree's kernels up to AVX2 (kEmbreeDeviceConfig): 16-wide rays are AVX-512's
+// alone, so the device reports them unsupported even on an AVX-512 CPU, while the 8-wide AVX
+// kernels stay on wherever the CPU has them.
+TEST(EmbreeDevice, KernelsStopAtAvx2) {
+    EXPECT_EQ(rtcGetDeviceProperty(embree_device(), RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED), 0);
+    if (__builtin_cpu_supports("avx2")) {
+        EXPECT_EQ(rtcGetDeviceProperty(embree_device(), RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED),
+                  1);
+    }
 }
 
 TEST(EmbreeDevice, ErrorsCarryEmbreesMessage) {
