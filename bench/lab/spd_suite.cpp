@@ -90,9 +90,9 @@ MachineInfo machine_info() {
     }
     if (m.cpu.empty()) m.cpu = "unknown";
     m.isa = "unknown";
-    for (const auto& [flag, isa] :
-         {std::pair{"avx512f", "avx512"}, std::pair{"avx2", "avx2"}, std::pair{"avx", "avx"},
-          std::pair{"sse4_2", "sse4.2"}, std::pair{"sse2", "sse2"}}) {
+    // Not avx512: the device stops at AVX2 (core/embree_device.h).
+    for (const auto& [flag, isa] : {std::pair{"avx2", "avx2"}, std::pair{"avx", "avx"},
+                                    std::pair{"sse4_2", "sse4.2"}, std::pair{"sse2", "sse2"}}) {
         if (flags.find(std::string(" ") + flag + " ") != std::string::npos) {
             m.isa = isa;
             break;

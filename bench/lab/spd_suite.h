@@ -21,7 +21,8 @@ struct SuiteOptions {
 };
 
 // The machine the suite ran on: /proc/cpuinfo's model name, the cores TBB uses, and the widest
-// vector ISA in the CPU flags that Embree can use (avx512, avx2, avx, sse4.2, sse2).
+// vector ISA in the CPU flags that rayo's Embree device uses (avx2, avx, sse4.2, sse2: the
+// device stops at AVX2, core/embree_device.h).
 struct MachineInfo {
     std::string cpu, isa;
     int cores = 0;
