@@ -6,8 +6,9 @@
 // the grid, in tile order, each a record of the tile's float RGBA pixels (scene-linear, as the
 // tile loop produced them) behind a small header with the tile index and a checksum. A record
 // counts only when its checksum matches, so a record torn by `kill -9` or a power loss is
-// rendered again; tiles are written by a thread of their own (pwrite, then fdatasync), and a
-// tile counts as done only once its batch is on the disk. Whatever the output format, resuming
+// rendered again; tiles are written by a thread of their own (pwrite as they come, fdatasync at
+// most once a second and when flushed or closed), and a tile counts as done only once it is on
+// the disk. Whatever the output format, resuming
 // feeds the saved floats to the output's sink as if just rendered: the result is the same bits
 // as an uninterrupted render.
 #include <condition_variable>
@@ -95,7 +96,7 @@ class PartialRender {
     void replay(TileSink& inner) const;
     void scan();
     void run();
-    void write_batch(std::deque<Job>& batch);
+    void write_batch(const std::deque<Job>& batch);
     void open_for_writing();
     size_t slot_bytes() const;
     size_t slot_offset(int index) const;
@@ -117,7 +118,8 @@ class PartialRender {
     std::condition_variable m_wake, m_idle;
     std::deque<Job> m_jobs;
     size_t m_queued_bytes = 0;
-    bool m_writing = false, m_stop = false;
+    std::vector<int> m_unsynced;  // tiles written, waiting for the next fdatasync
+    bool m_writing = false, m_stop = false, m_sync_requested = false;
     std::string m_error;
     std::thread m_thread;
 };
