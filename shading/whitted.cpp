@@ -1,5 +1,7 @@
 #include "shading/whitted.h"
 
+#include <tbb/enumerable_thread_specific.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -578,7 +580,11 @@ void WhittedIntegrator::radiance_coherent(const Ray* rays, int count, Vec3* radi
     // children as add_transport does.
     constexpr int kBatch = Accel::kCoherentBatch;
     // The ray tree's nodes; kept per thread so that its storage is allocated once, not per batch.
-    thread_local std::vector<PathNode> nodes;
+    // A TBB thread-specific, not a thread_local: the first use of a thread_local with a
+    // destructor registers it with the dynamic loader's lock held, which the image module's
+    // background load holds for ~0.3 s (docs/performance.md "Fixed costs").
+    static tbb::enumerable_thread_specific<std::vector<PathNode>> per_thread_nodes;
+    std::vector<PathNode>& nodes = per_thread_nodes.local();
     for (int first = 0; first < count; first += kBatch) {
         const int n = std::min(kBatch, count - first);
         // The children of the last batch are dropped; the n camera nodes reuse their storage.

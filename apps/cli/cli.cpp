@@ -801,9 +801,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 int render_command(const std::vector<std::string>& arg_list, std::ostream& out, std::ostream& err,
                    std::optional<MpiTileDistribution>& distribution) {
     const RenderArgs args = parse_render_args(arg_list);
-    // Rank 0 writes an image: the image module loads (~0.25 s, docs/performance.md "Fixed
-    // costs") while the scene is parsed and rendered.
-    if (MpiWorld::rank() == 0) preload_image_library();
     const auto total_start = std::chrono::steady_clock::now();
     auto start = total_start;
     SceneDescription d = args.scene_path ? load_scene_file(*args.scene_path, args.load_options)
@@ -879,6 +876,10 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     }
     if (args.resume && !args.journal)
         throw UsageError("--resume and --no-journal exclude each other");
+    // Every thread the render needs is started before the image module starts loading: the
+    // load holds the dynamic loader's lock, which creating a thread takes (TBB's workers here,
+    // the journal's and the streamed output's writer below).
+    if (writes_image) start_worker_threads(threads);
     std::unique_ptr<PartialRender> partial;
     std::vector<int> missing;
     if (args.journal && !MpiWorld::distributed()) {
@@ -913,6 +914,9 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         }
         std::unique_ptr<TileSink> recorder;
         if (partial) recorder = partial->recording_sink(*sink);
+        // The image module loads (~0.3 s, docs/performance.md "Fixed costs") while the render
+        // runs; a streamed output's writer thread has started it already.
+        if (writes_image && !stream) preload_image_library();
         result = render_scene(d, threads, progress, recorder ? recorder.get() : sink, ranks,
                               partial ? &missing : nullptr);
     }

@@ -2,14 +2,18 @@
 
 #include <tbb/global_control.h>
 #include <tbb/info.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <thread>
 
 #include "core/accel.h"
 #include "core/camera.h"
+#include "core/embree_device.h"
 #include "core/error.h"
 #include "core/film.h"
 #include "core/render.h"
@@ -90,6 +94,28 @@ void check_material_ids(const SceneDescription& d) {
 
 int default_thread_count() {
     return tbb::info::default_concurrency();
+}
+
+void start_worker_threads(int threads) {
+    // At least two: TBB loads its thread server (libirml) and allocator with its first worker,
+    // by dlopen, which waits for the same lock; with one render thread the worker stays idle.
+    const int count = std::max(2, threads > 0 ? threads : default_thread_count());
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                              static_cast<size_t>(count));
+    // One iteration per thread, each held until all have arrived (or 50 ms passed, should TBB
+    // give fewer threads): every worker has then been created.
+    std::atomic<int> arrived{0};
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(50);
+    tbb::parallel_for(
+        0, count,
+        [&](int) {
+            ++arrived;
+            while (arrived.load() < count && std::chrono::steady_clock::now() < deadline) {
+                std::this_thread::yield();
+            }
+        },
+        tbb::simple_partitioner());
+    embree_device();  // Embree's device and its TBB arena, for the same reason
 }
 
 RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress,

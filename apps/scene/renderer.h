@@ -51,4 +51,10 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
 // The thread count TBB uses when none is given.
 int default_thread_count();
 
+// Starts TBB's worker threads for a render on `threads` threads (0: the default) now, instead of
+// at the render's first parallel loop. Creating a thread takes the dynamic loader's lock, which
+// the image module's background load (core/image_library.h) holds for its whole ~0.3 s: workers
+// started before that load render during it (docs/performance.md "Fixed costs").
+void start_worker_threads(int threads);
+
 }  // namespace rayo

@@ -45,19 +45,18 @@ class FileWriter {
   public:
     using WriteBatch = std::function<bool(ImageWriter&, std::vector<Piece>&)>;
 
+    // The temporary file is created here, so that an unwritable output fails before the render;
+    // the image module's writer is opened on the writer thread, so that the render does not wait
+    // for the module to load (docs/performance.md "Fixed costs"): tiles queue meanwhile.
     FileWriter(const std::string& path, const ImageFileSpec& spec, WriteBatch write)
         : m_path(path), m_tmp(temporary_path_for(path)), m_guard(m_tmp), m_write(std::move(write)) {
-        const ImageLibrary& library = image_library();
         errno = 0;
-        std::string reason;
-        m_out = library.create_writer(m_tmp, spec, reason);
-        if (!m_out) {
-            const int error = errno;
-            std::remove(m_tmp.c_str());
-            errno = error;
-            fail_now(reason);
+        if (std::FILE* file = std::fopen(m_tmp.c_str(), "wb")) {
+            std::fclose(file);
+        } else {
+            fail_now("cannot create the temporary file");
         }
-        m_thread = std::thread([this] { run(); });
+        m_thread = std::thread([this, spec] { run(spec); });
     }
 
     ~FileWriter() {
@@ -81,7 +80,8 @@ class FileWriter {
     void push(size_t bytes, Piece piece) {
         std::unique_lock<std::mutex> lock(m_mutex);
         m_room.wait(lock, [&] {
-            return !m_error.empty() || m_pieces.empty() || m_queued + bytes <= kStreamQueueBytes;
+            return !m_error.empty() || !m_open || m_pieces.empty() ||
+                   m_queued + bytes <= kStreamQueueBytes;
         });
         throw_failure(lock);
         m_queued += bytes;
@@ -109,9 +109,12 @@ class FileWriter {
     }
 
   private:
-    // Takes the whole queue at once: the queue has room again while the batch is written (at most
-    // two queues' worth of pieces are held), and the batch is as large as the writer fell behind.
-    void run() {
+    // Opens the writer, then takes the whole queue at once: the queue has room again while the
+    // batch is written (at most two queues' worth of pieces are held), and the batch is as large
+    // as the writer fell behind. Until the writer is open the queue is not bounded: the tiles of
+    // the module's load time (a fraction of a second of rendering) wait in memory.
+    void run(const ImageFileSpec& spec) {
+        open_writer(spec);
         std::unique_lock<std::mutex> lock(m_mutex);
         std::vector<Piece> batch;
         for (;;) {
@@ -137,6 +140,24 @@ class FileWriter {
         }
     }
 
+    // The module's writer on the temporary file; a failure is kept for push() and finish().
+    void open_writer(const ImageFileSpec& spec) {
+        std::string failure;
+        try {
+            const ImageLibrary& library = image_library();
+            errno = 0;
+            std::string reason;
+            m_out = library.create_writer(m_tmp, spec, reason);
+            if (!m_out) failure = write_failure(reason, errno, m_tmp, m_path);
+        } catch (const std::exception& e) {
+            failure = e.what();
+        }
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_open = true;
+        if (!failure.empty()) m_error = failure;
+        m_room.notify_all();
+    }
+
     void throw_failure(std::unique_lock<std::mutex>&) const {
         if (!m_error.empty()) throw InputError(m_path, "cannot write: " + m_error);
     }
@@ -152,7 +173,7 @@ class FileWriter {
     std::condition_variable m_wake, m_room;
     std::deque<Piece> m_pieces;
     size_t m_queued = 0;
-    bool m_stop = false, m_abandon = false, m_committed = false;
+    bool m_open = false, m_stop = false, m_abandon = false, m_committed = false;
     std::string m_error;
     std::thread m_thread;
 };
