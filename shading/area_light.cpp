@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/luminance.h"
 #include "core/sampling.h"
 
 namespace rayo {
@@ -33,11 +34,6 @@ bool flat_sample(const Vec3& point, const Vec3& target, const Vec3& normal, floa
     out.pdf = distance * distance / (area * cos_light);
     out.on_surface = true;
     return true;
-}
-
-// Rec. 709 luminance, the weight of a radiance in the power CDF.
-float luminance(const Vec3& c) {
-    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "core/luminance.h"
 #include "core/math.h"
 
 namespace rayo {
@@ -78,7 +79,7 @@ struct MaterialCutout {
 // The Rec. 709 luminance of a texel's linear RGB (a grey image's value): heights of bump maps,
 // the coverage of MTL map_d images without alpha.
 inline float texel_luminance(const glm::vec4& texel) {
-    return 0.2126f * texel.x + 0.7152f * texel.y + 0.0722f * texel.z;
+    return luminance(texel.x, texel.y, texel.z);
 }
 
 // The image textures of a material. `base` drives ka, kd, ks and reflect through their terms

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "core/image_library.h"
+#include "core/luminance.h"
 
 namespace rayo {
 
@@ -40,9 +41,8 @@ HeightSamples read_height_image(const std::string& path, const std::string& wher
         out.values = std::move(pixels);
     } else {
         out.values.resize(samples);
-        for (size_t i = 0; i < samples; ++i) {  // Rec. 709 luminance
-            out.values[i] =
-                0.2126f * pixels[3 * i] + 0.7152f * pixels[3 * i + 1] + 0.0722f * pixels[3 * i + 2];
+        for (size_t i = 0; i < samples; ++i) {
+            out.values[i] = luminance(pixels[3 * i], pixels[3 * i + 1], pixels[3 * i + 2]);
         }
     }
     for (size_t i = 0; i < out.values.size(); ++i) {
