@@ -115,7 +115,7 @@ void start_worker_threads(int threads) {
             }
         },
         tbb::simple_partitioner());
-    embree_device();  // Embree's device and its TBB arena, for the same reason
+    embree_device();  // created here too, so that none of Embree's set-up falls inside the load
 }
 
 RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress,
