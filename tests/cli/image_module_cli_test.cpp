@@ -67,14 +67,19 @@ TEST_F(ImageModuleCli, MissingModuleIsAClearErrorAndLeavesNoOutput) {
 TEST_F(ImageModuleCli, ALibraryThatIsNotTheModuleIsRefused) {
     write("two.nff", kSceneNff);
     // A shared library every process has, without the module's entry point: found, so the
-    // render runs, and refused at the write (--no-journal: no .rayo-partial kept to resume).
-    const CommandResult r =
-        run("render two.nff --width 30 --no-journal -o out.exr", "RAYO_IMAGE_MODULE=libm.so.6");
-    EXPECT_EQ(r.exit_code, 1) << r.output;
-    EXPECT_NE(r.output.find("libm.so.6: no rayo_image_library (not rayo's image module)"),
-              std::string::npos)
-        << r.output;
-    EXPECT_EQ(listing(), std::set<std::string>{"two.nff"});
+    // render runs, and refused at the write (--no-journal: no .rayo-partial kept to resume). In
+    // memory the write loads it; streamed, the writer's thread does while the render runs, and
+    // the failure reaches the render at its next tile or at the end.
+    for (const std::string args : {"render two.nff --width 30 --no-journal -o out.exr",
+                                   "render two.nff --width 30 --no-journal --stream -o out.exr",
+                                   "render two.nff --width 30 --no-journal --stream -o out.png"}) {
+        const CommandResult r = run(args, "RAYO_IMAGE_MODULE=libm.so.6");
+        EXPECT_EQ(r.exit_code, 1) << args << ":\n" << r.output;
+        EXPECT_NE(r.output.find("libm.so.6: no rayo_image_library (not rayo's image module)"),
+                  std::string::npos)
+            << r.output;
+        EXPECT_EQ(listing(), std::set<std::string>{"two.nff"}) << args;
+    }
 }
 
 }  // namespace
