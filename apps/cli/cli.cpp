@@ -1069,7 +1069,9 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
                          ")");
     }
     check_film_size(width, height, "--size");
-    preload_image_library();  // for the image written at the end, as for render
+    // For the image written at the end, as for render: the threads first (render_command).
+    start_worker_threads(0);
+    preload_image_library();
     Texture texture = make_texture(*name);
     if (scale) texture.scale = *scale;
     texture.seed = seed;
@@ -1127,7 +1129,9 @@ PreviewArgs parse_preview_args(const std::vector<std::string>& args) {
 int run_preview(const std::vector<std::string>& arg_list, std::ostream& out, std::ostream& err) {
     const PreviewArgs args = parse_preview_args(arg_list);
     const RenderArgs& r = args.render;
-    preload_image_library();  // for the image written at the end, as for render
+    // For the image written at the end, as for render: the threads first (render_command).
+    start_worker_threads(r.threads.value_or(0));
+    preload_image_library();
     const auto total_start = std::chrono::steady_clock::now();
     SceneDescription d =
         r.scene_path ? load_scene_file(*r.scene_path, r.load_options) : make_default_scene();
