@@ -404,12 +404,14 @@ void PartialRender::run() {
     using Clock = std::chrono::steady_clock;
     Clock::time_point last_sync = Clock::now();
     std::unique_lock<std::mutex> lock(m_mutex);
+    // A sync was asked for (flush, close) or the interval has passed.
+    const auto sync_due = [&] {
+        return m_stop || m_sync_requested || Clock::now() - last_sync >= kSyncInterval;
+    };
+    const auto ready = [&] {
+        return m_stop || !m_jobs.empty() || (!m_unsynced.empty() && sync_due());
+    };
     for (;;) {
-        const auto sync_due = [&] {
-            return !m_unsynced.empty() &&
-                   (m_stop || m_sync_requested || Clock::now() - last_sync >= kSyncInterval);
-        };
-        const auto ready = [&] { return m_stop || !m_jobs.empty() || sync_due(); };
         if (m_unsynced.empty()) {
             m_wake.wait(lock, ready);
         } else {
@@ -418,40 +420,37 @@ void PartialRender::run() {
         if (m_stop && m_jobs.empty() && m_unsynced.empty()) return;
         std::deque<Job> batch;
         batch.swap(m_jobs);
-        const bool urgent = m_stop || m_sync_requested;
-        std::vector<int> written = m_unsynced;  // the writer alone changes m_unsynced
-        std::string error = m_error;
+        // Only this thread changes m_unsynced: the tiles written before this batch.
+        const bool sync = (!m_unsynced.empty() || !batch.empty()) && sync_due();
+        const bool failed = !m_error.empty();
         m_writing = true;
         lock.unlock();
-        bool synced = false;
-        if (error.empty()) {
+        std::string error;
+        if (!failed) {
             try {
                 if (!batch.empty()) write_batch(batch);
-                for (const Job& job : batch) written.push_back(job.tile.index);
-                if (!written.empty() && (urgent || Clock::now() - last_sync >= kSyncInterval)) {
-                    if (::fdatasync(m_fd) != 0) fail("cannot write", errno);
-                    last_sync = Clock::now();
-                    synced = true;
-                }
+                if (sync && ::fdatasync(m_fd) != 0) fail("cannot write", errno);
             } catch (const std::exception& e) {
                 error = e.what();
             }
         }
+        if (sync) last_sync = Clock::now();
         lock.lock();
-        if (!error.empty()) {
-            if (m_error.empty()) m_error = error;
-            written.clear();  // the tiles on the disk before the failure stay done
+        for (const Job& job : batch) {
+            m_queued_bytes -= job.rgba.size() * sizeof(float);
+            if (!failed) m_unsynced.push_back(job.tile.index);
         }
-        if (synced) {
-            for (const int index : written) {
+        if (!error.empty()) m_error = error;
+        if (!m_error.empty()) {
+            m_unsynced.clear();  // the tiles on the disk before the failure stay done
+        } else if (sync) {
+            for (const int index : m_unsynced) {
                 if (m_done[index]) continue;
                 m_done[index] = 1;
                 ++m_done_count;
             }
-            written.clear();
+            m_unsynced.clear();
         }
-        m_unsynced = std::move(written);
-        for (const Job& job : batch) m_queued_bytes -= job.rgba.size() * sizeof(float);
         m_writing = false;
         m_idle.notify_all();
     }
