@@ -1,5 +1,7 @@
 #include "shading/cutouts.h"
 
+#include "core/luminance.h"
+
 namespace rayo {
 
 MaterialCutouts::MaterialCutouts(const std::vector<Material>& materials,
@@ -19,7 +21,7 @@ float MaterialCutouts::alpha(uint32_t material, const glm::vec2& uv) const {
     const glm::vec4 texel = m_images->lookup(material, Slot::Cutout, uv, 0.0f);
     if (cutout.luminance && !m_images->has_alpha(material, Slot::Cutout)) {
         // MTL map_d on an image without alpha: its luminance.
-        return cutout.factor * texel_luminance(texel);
+        return cutout.factor * luminance(Vec3(texel));
     }
     return cutout.factor * texel.w;
 }

@@ -7,7 +7,6 @@
 #include <memory>
 #include <string>
 
-#include "core/luminance.h"
 #include "core/math.h"
 
 namespace rayo {
@@ -75,12 +74,6 @@ struct MaterialCutout {
     float cutoff = 0.5f;
     bool luminance = false;
 };
-
-// The Rec. 709 luminance of a texel's linear RGB (a grey image's value): heights of bump maps,
-// the coverage of MTL map_d images without alpha.
-inline float texel_luminance(const glm::vec4& texel) {
-    return luminance(texel.x, texel.y, texel.z);
-}
 
 // The image textures of a material. `base` drives ka, kd, ks and reflect through their terms
 // (each term unused leaves its coefficient constant); `specular` multiplies ks (MTL map_Ks);

@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/luminance.h"
 #include "shading/media.h"
 #include "shading/metallic_roughness.h"
 #include "shading/normal_mapping.h"
@@ -168,7 +169,7 @@ Vec3 WhittedIntegrator::mapped_normal(const SurfaceHit& surface, float width,
         const float step = width > 0.0f ? 0.5f * width : 0.0005f;
         const auto height = [&](const glm::vec2& uv) {
             const glm::vec4 texel = m_images->lookup(surface.material, Slot::Bump, uv, width);
-            return images.bump_scale * texel_luminance(texel);
+            return images.bump_scale * luminance(Vec3(texel));
         };
         const float f = height(surface.uv);
         const float dfdu = (height(surface.uv + glm::vec2(step, 0.0f)) - f) / step;

@@ -792,6 +792,15 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
     }
 }
 
+// The render threads first, then the image module's load beside the work (for the image written
+// at the end): the load holds the dynamic loader's lock, which creating a thread takes
+// (docs/performance.md "Fixed costs"). render_command does the two apart, with the journal's and
+// the stream's threads between them.
+void start_threads_then_image_module(int threads) {
+    start_worker_threads(threads);
+    preload_image_library();
+}
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -1069,9 +1078,7 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
                          ")");
     }
     check_film_size(width, height, "--size");
-    // For the image written at the end, as for render: the threads first (render_command).
-    start_worker_threads(0);
-    preload_image_library();
+    start_threads_then_image_module(0);
     Texture texture = make_texture(*name);
     if (scale) texture.scale = *scale;
     texture.seed = seed;
@@ -1129,9 +1136,7 @@ PreviewArgs parse_preview_args(const std::vector<std::string>& args) {
 int run_preview(const std::vector<std::string>& arg_list, std::ostream& out, std::ostream& err) {
     const PreviewArgs args = parse_preview_args(arg_list);
     const RenderArgs& r = args.render;
-    // For the image written at the end, as for render: the threads first (render_command).
-    start_worker_threads(r.threads.value_or(0));
-    preload_image_library();
+    start_threads_then_image_module(r.threads.value_or(0));
     const auto total_start = std::chrono::steady_clock::now();
     SceneDescription d =
         r.scene_path ? load_scene_file(*r.scene_path, r.load_options) : make_default_scene();
