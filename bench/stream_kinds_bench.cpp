@@ -1,10 +1,11 @@
 // Each ray kind of the coherent path through rayo's Accel against raw Embree on the same rays.
 // The rays are recorded from a render of an SPD scene that rayo generates (balls 3 by default,
-// bench/lab/spd_scenes.h; RAYO_STREAM_SCENE=name:size picks another) at 512×512: every stream
-// call the integrator makes with stream_secondary (WhittedIntegrator::record_streams), replayed
-// call by call with the same batch sizes and Embree context flags, on one thread: the rates are per
-// CPU second of that thread, which other processes on a shared machine disturb far less than wall
-// time.
+// bench/lab/spd_scenes.h; RAYO_STREAM_SCENE=name:size picks another) at 512×512 (RAYO_STREAM_SIZE=N
+// records an N×N frame instead: 2048 gives the rays of the 2048² comparison with POV-Ray): every
+// stream call the integrator makes with stream_secondary (WhittedIntegrator::record_streams),
+// replayed call by call with the same batch sizes and Embree context flags, on one thread: the
+// rates are per CPU second of that thread, which other processes on a shared machine disturb far
+// less than wall time.
 //   Rayo/<kind>        Accel::intersect_coherent (with the hit record) / occluded_coherent
 //   RayoSingle/<kind>  Accel::intersect / occluded ray by ray (the --single-rays path)
 //   RawStream/<kind>   rtcIntersect1M / rtcOccluded1M on the same calls, nothing else
@@ -15,6 +16,7 @@
 // (rays per CPU second).
 #include <benchmark/benchmark.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -33,7 +35,20 @@
 namespace rayo {
 namespace {
 
-constexpr int kSize = 512;
+// The recorded frame's width and height: 512, or RAYO_STREAM_SIZE (a multiple of 8).
+int frame_size() {
+    static const int size = [] {
+        const char* env = std::getenv("RAYO_STREAM_SIZE");
+        const int n = env ? std::atoi(env) : 512;
+        if (n < 8 || n % 8 != 0) {
+            std::fprintf(stderr, "RAYO_STREAM_SIZE=%s: expected a multiple of 8, at least 8\n",
+                         env);
+            std::exit(2);
+        }
+        return n;
+    }();
+    return size;
+}
 const char* const kKindNames[] = {"camera", "shadow-camera", "shadow-secondary", "secondary"};
 
 struct Recording {
@@ -70,8 +85,9 @@ const Recording& recording() {
             if (colon != std::string::npos) size = std::stoi(spec.substr(colon + 1));
         }
         rec.description = spd_scene(name, size);
-        rec.description.scene.camera.width = kSize;
-        rec.description.scene.camera.height = kSize;
+        const int frame = frame_size();
+        rec.description.scene.camera.width = frame;
+        rec.description.scene.camera.height = frame;
         const Camera camera = Camera::create(rec.description.scene.camera);
         const SphereChoice spheres = choose_sphere_method(rec.description, camera);
         AccelOptions options;
@@ -85,8 +101,8 @@ const Recording& recording() {
         RayCounters counters;
         Ray rays[64];
         Vec3 radiance[64];
-        for (int by = 0; by < kSize; by += 8) {
-            for (int bx = 0; bx < kSize; bx += 8) {
+        for (int by = 0; by < frame; by += 8) {
+            for (int bx = 0; bx < frame; bx += 8) {
                 int n = 0;
                 for (int y = by; y < by + 8; ++y) {
                     for (int x = bx; x < bx + 8; ++x) n += pixel_ray(camera, x, y, 0, 1, rays[n]);

@@ -51,6 +51,9 @@ constexpr int kExitInput = 1;
 constexpr int kExitUsage = 2;
 constexpr int kMaxDepthLimit = 64;
 constexpr int kMaxSpp = 1 << 16;
+// A render keeps its tiles for --resume from this many seconds on (docs/high-resolution.md,
+// "Interrupt and resume"): a shorter render writes no OUTPUT.rayo-partial.
+constexpr double kJournalAfterSeconds = 2.0;
 
 // `rayo --help`: the commands and every input rayo reads (kInputs); each command's own usage
 // and flags are its help (`rayo render --help`, command_help).
@@ -162,6 +165,9 @@ render options:
                            the tiles missing from OUTPUT.rayo-partial (same scene and settings;
                            docs/high-resolution.md)
   --no-journal             keep no OUTPUT.rayo-partial: Ctrl-C ends at once, not resumable
+  --journal-after S        keep tiles in OUTPUT.rayo-partial from S seconds into the render on:
+                           shorter renders write none, an interrupt loses at most S seconds of
+                           work; 0 keeps every tile [2]
   --quiet                  no progress bar and no summary line
   --stats                  print the full statistics table
 
@@ -328,6 +334,7 @@ struct RenderArgs {
     StreamMode stream = StreamMode::Auto;
     bool resume = false;
     bool journal = true;
+    std::optional<double> journal_after_s;  // --journal-after (default kJournalAfterSeconds)
     bool quiet = false;
     bool stats = false;
 };
@@ -465,6 +472,8 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             r.resume = true;
         } else if (a == "--no-journal") {
             r.journal = false;
+        } else if (a == "--journal-after") {
+            r.journal_after_s = parse_number(a, cursor.value(), 0.0, 1e6);
         } else if (a == "--quiet" || a == "-q") {
             r.quiet = true;
         } else if (a == "--stats") {
@@ -885,6 +894,13 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     }
     if (args.resume && !args.journal)
         throw UsageError("--resume and --no-journal exclude each other");
+    if (args.journal_after_s && !args.journal)
+        throw UsageError("--journal-after and --no-journal exclude each other");
+    if (args.journal_after_s && args.resume) {
+        throw UsageError(
+            "--journal-after: a resumed render keeps every tile; the delay is for a "
+            "new render");
+    }
     // Every thread the render needs is started before the image module starts loading: the
     // load holds the dynamic loader's lock, which creating a thread takes (TBB's workers here,
     // the journal's and the streamed output's writer below).
@@ -894,8 +910,14 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     if (args.journal && !MpiWorld::distributed()) {
         const TileGrid grid(cam.width, cam.height, d.settings.tile_size);
         const RenderFingerprint fingerprint = render_fingerprint(args, d);
-        partial = args.resume ? PartialRender::resume(output, grid, fingerprint)
-                              : PartialRender::create(output, grid, fingerprint);
+        const std::chrono::duration<double> keep_after(
+            args.journal_after_s.value_or(kJournalAfterSeconds));
+        partial =
+            args.resume
+                ? PartialRender::resume(output, grid, fingerprint)
+                : PartialRender::create(
+                      output, grid, fingerprint,
+                      std::chrono::duration_cast<std::chrono::steady_clock::duration>(keep_after));
         missing = partial->missing_tiles();
         apply_test_interrupt(*partial);
         if (args.resume && !args.quiet) {
@@ -943,7 +965,8 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         const int done = partial->tiles_done();
         err << "rayo: interrupted: " << done << " of " << partial->tile_count() << " tiles done; "
             << (done > 0 ? "resume with --resume (the tiles are kept in " + partial->path() + ")"
-                         : std::string("nothing kept"))
+                         : std::string("nothing kept (tiles are kept from --journal-after "
+                                       "seconds into a render on)"))
             << "\n";
         return 128 + stop_signal();
     }

@@ -164,10 +164,11 @@ PartialRender::PartialRender(const std::string& output, const TileGrid& grid,
     m_header.resize(m_header_bytes, '\0');
 }
 
-std::unique_ptr<PartialRender> PartialRender::create(const std::string& output,
-                                                     const TileGrid& grid,
-                                                     const RenderFingerprint& fingerprint) {
+std::unique_ptr<PartialRender> PartialRender::create(
+    const std::string& output, const TileGrid& grid, const RenderFingerprint& fingerprint,
+    std::chrono::steady_clock::duration keep_after) {
     std::unique_ptr<PartialRender> partial(new PartialRender(output, grid, fingerprint));
+    partial->m_keep_from = std::chrono::steady_clock::now() + keep_after;
     struct stat info {};
     if (::stat(partial->m_path.c_str(), &info) == 0) {
         if (locked_by_another_render(partial->m_path))
@@ -335,15 +336,20 @@ void PartialRender::raise_after(int tiles, int signal_number) {
 
 void PartialRender::record(const Tile& tile, const float* rgba) {
     const size_t bytes = tile.pixel_count() * 4 * sizeof(float);
+    const bool keep = std::chrono::steady_clock::now() >= m_keep_from;
     std::unique_lock<std::mutex> lock(m_mutex);
-    m_idle.wait(lock, [&] {
-        return !m_error.empty() || m_jobs.empty() || m_queued_bytes + bytes <= kQueueBytes;
-    });
-    if (!m_error.empty()) return;  // the partial render stopped growing (failure())
-    m_jobs.push_back({tile, std::vector<float>(rgba, rgba + tile.pixel_count() * 4)});
-    m_queued_bytes += bytes;
-    m_wake.notify_one();
-    if (m_raise_after > 0 && ++m_recorded_this_run == m_raise_after) {
+    if (keep) {
+        m_idle.wait(lock, [&] {
+            return !m_error.empty() || m_jobs.empty() || m_queued_bytes + bytes <= kQueueBytes;
+        });
+        // After a failure the partial render stops growing (failure()).
+        if (m_error.empty()) {
+            m_jobs.push_back({tile, std::vector<float>(rgba, rgba + tile.pixel_count() * 4)});
+            m_queued_bytes += bytes;
+            m_wake.notify_one();
+        }
+    }
+    if (m_raise_after > 0 && ++m_finished_this_run == m_raise_after) {
         lock.unlock();
         std::raise(m_raise_signal);  // on this worker: it takes no further tile
     }

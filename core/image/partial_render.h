@@ -8,9 +8,12 @@
 // counts only when its checksum matches, so a record torn by `kill -9` or a power loss is
 // rendered again; tiles are written by a thread of their own (pwrite as they come, fdatasync at
 // most once a second and when flushed or closed), and a tile counts as done only once it is on
-// the disk. Whatever the output format, resuming
+// the disk. A new partial render keeps the tiles finished from `keep_after` into the render on
+// (`rayo render --journal-after`, 2 s by default): a render shorter than that writes no file,
+// and an interrupted one loses at most that much work. Whatever the output format, resuming
 // feeds the saved floats to the output's sink as if just rendered: the result is the same bits
 // as an uninterrupted render.
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
@@ -39,11 +42,13 @@ uint64_t checksum64(const void* data, size_t bytes);
 
 class PartialRender {
   public:
-    // A new partial render of `output` for `grid`; its file is created with the first tile.
-    // InputError(output) when a partial render of it exists already (it is not discarded: it
-    // is resumed with --resume, or removed by the user to start over).
-    static std::unique_ptr<PartialRender> create(const std::string& output, const TileGrid& grid,
-                                                 const RenderFingerprint& fingerprint);
+    // A new partial render of `output` for `grid`; its file is created with the first tile
+    // kept, the first to finish `keep_after` or later after this call (earlier ones are not
+    // kept). InputError(output) when a partial render of it exists already (it is not
+    // discarded: it is resumed with --resume, or removed by the user to start over).
+    static std::unique_ptr<PartialRender> create(
+        const std::string& output, const TileGrid& grid, const RenderFingerprint& fingerprint,
+        std::chrono::steady_clock::duration keep_after = std::chrono::steady_clock::duration(0));
     // The partial render of `output`, its valid tiles found (checksums read). InputError(output)
     // when there is none, when it is not a partial render, or when its fingerprint differs from
     // `fingerprint` (every difference named: "spp: 1 in the partial render, 2 now").
@@ -79,8 +84,8 @@ class PartialRender {
     void remove();
 
     // For tests (RAYO_TEST_INTERRUPT, apps/cli): raise `signal_number` on the worker that
-    // records the `tiles`-th tile of this run, as a user's Ctrl-C or kill would at that point
-    // (with one thread, exactly `tiles` tiles are then done).
+    // finishes the `tiles`-th tile of this run, as a user's Ctrl-C or kill would at that point
+    // (with one thread and every tile kept, exactly `tiles` tiles are then done).
     void raise_after(int tiles, int signal_number);
 
   private:
@@ -111,7 +116,8 @@ class PartialRender {
     bool m_complete = false;   // the recording sink's finish() ran
     std::vector<char> m_done;  // per tile: on the disk
     int m_done_count = 0;
-    int m_recorded_this_run = 0;
+    int m_finished_this_run = 0;
+    std::chrono::steady_clock::time_point m_keep_from;  // tiles finished earlier are not kept
     int m_raise_after = 0, m_raise_signal = 0;
 
     mutable std::mutex m_mutex;

@@ -4,8 +4,8 @@
 // missing tiles, into the same bits as an uninterrupted render, and refuses other settings;
 // records torn by kill -9 are rendered again. (`--no-journal`, which keeps nothing and ends at the
 // first signal: tests/cli/stream_cli_test.cpp and bad_input_files_test.cpp.) The interruptions are
-// deterministic: RAYO_TEST_INTERRUPT=K[:TERM] raises the signal on the worker that records the K-th
-// tile, so with one thread exactly K tiles are done.
+// deterministic: RAYO_TEST_INTERRUPT=K[:TERM] raises the signal on the worker that finishes the
+// K-th tile, so with one thread and --journal-after 0 exactly K tiles are done.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tests/cli/cli_fixture.h"
@@ -43,9 +44,12 @@ class ResumeCli : public rayo_test::CliFixture {
         return bytes;
     }
 
-    // `rayo render scene.nff --tile-size 16 ARGS` interrupted after `tiles` tiles (one thread).
+    // `rayo render scene.nff --tile-size 16 ARGS` interrupted after `tiles` tiles (one thread),
+    // every tile kept (--journal-after 0; a resume keeps every tile anyway).
     CommandResult interrupted(const std::string& args, int tiles, const std::string& signal = "") {
-        return run("render scene.nff --tile-size 16 --threads 1 " + args,
+        const bool resume = args.find("--resume") != std::string::npos;
+        return run("render scene.nff --tile-size 16 --threads 1 " +
+                       std::string(resume ? "" : "--journal-after 0 ") + args,
                    "RAYO_TEST_INTERRUPT=" + std::to_string(tiles) + signal);
     }
 
@@ -174,6 +178,43 @@ TEST_F(ResumeCli, ResumeWithoutAPartialRenderIsRefused) {
     EXPECT_EQ(listing(), std::set<std::string>{"scene.nff"});
 }
 
+// Tiles finished before --journal-after seconds into the render are not kept (2 s by default):
+// interrupted before, a render keeps nothing, says so, and leaves no file.
+TEST_F(ResumeCli, TilesBeforeJournalAfterAreNotKept) {
+    write("scene.nff", kSceneNff);
+    for (const std::string after : {"", "--journal-after 3600 "}) {
+        const CommandResult r =
+            run("render scene.nff --tile-size 16 --threads 1 " + after + "-o out.exr",
+                "RAYO_TEST_INTERRUPT=3");
+        EXPECT_EQ(r.exit_code, 130) << after << "\n" << r.output;
+        EXPECT_NE(r.output.find("rayo: interrupted: 0 of 70 tiles done; nothing kept (tiles are "
+                                "kept from --journal-after seconds into a render on)"),
+                  std::string::npos)
+            << r.output;
+        EXPECT_EQ(listing(), std::set<std::string>{"scene.nff"}) << after;
+    }
+}
+
+// --journal-after takes a finite number of seconds, at least 0, and only for a new render that
+// keeps a partial render.
+TEST_F(ResumeCli, JournalAfterIsChecked) {
+    write("scene.nff", kSceneNff);
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"--journal-after -1", "--journal-after: expected a number in [0, 1e+06], got '-1'"},
+        {"--journal-after nan", "--journal-after: expected a number in [0, 1e+06], got 'nan'"},
+        {"--journal-after 2s", "--journal-after: expected a number in [0, 1e+06], got '2s'"},
+        {"--journal-after 1 --no-journal", "--journal-after and --no-journal exclude each other"},
+        {"--journal-after 1 --resume", "--journal-after: a resumed render keeps every tile"},
+    };
+    for (const auto& [args, expected] : cases) {
+        const CommandResult r = run("render scene.nff -o out.exr " + args);
+        EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+        EXPECT_NE(r.output.find("rayo: error: " + expected), std::string::npos) << args << "\n"
+                                                                                << r.output;
+        EXPECT_EQ(listing(), std::set<std::string>{"scene.nff"}) << args;
+    }
+}
+
 // What kill -9 or a power loss leaves: a record cut short, a record with other bytes. Both
 // tiles are rendered again; the others are taken from the file; the image is the same bits.
 TEST_F(ResumeCli, TornRecordsAreRenderedAgain) {
@@ -204,9 +245,9 @@ TEST_F(ResumeCli, TornRecordsAreRenderedAgain) {
 TEST_F(ResumeCli, AFailingPartialRenderDoesNotFailTheRender) {
     write("scene.nff", kSceneNff);
     ASSERT_EQ(run("render scene.nff --tile-size 16 -o reference.png").exit_code, 0);
-    const WatchedResult r =
-        run_watched({"render", "scene.nff", "--tile-size", "16", "--threads", "1", "-o", "out.png"},
-                    60.0, {}, kHeaderBytes + 20 * kSlotBytes);
+    const WatchedResult r = run_watched({"render", "scene.nff", "--tile-size", "16", "--threads",
+                                         "1", "--journal-after", "0", "-o", "out.png"},
+                                        60.0, {}, kHeaderBytes + 20 * kSlotBytes);
     EXPECT_EQ(r.exit_code, 0) << r.output;
     EXPECT_NE(r.output.find("rayo: warning: out.png: partial render 'out.png.rayo-partial': "
                             "cannot write: File too large; the render went on without keeping "
@@ -223,19 +264,19 @@ TEST_F(ResumeCli, ResumeAfterKillMinus9) {
     const std::string args = " --width 600 --height 400 --spp 4 --tile-size 16 --threads 1";
     ASSERT_EQ(run("render scene.nff -o reference.exr" + args).exit_code, 0);
     bool killed = false;
-    const WatchedResult r =
-        run_watched({"render", "scene.nff", "--width", "600", "--height", "400", "--spp", "4",
-                     "--tile-size", "16", "--threads", "1", "-o", "out.exr"},
-                    120.0, [&](pid_t pid) {
-                        std::error_code ec;
-                        if (std::filesystem::file_size(m_dir / "out.exr.rayo-partial", ec) <
-                                kHeaderBytes + 20 * kSlotBytes ||
-                            ec)
-                            return false;
-                        ::kill(pid, SIGKILL);
-                        killed = true;
-                        return true;
-                    });
+    const WatchedResult r = run_watched(
+        {"render", "scene.nff", "--width", "600", "--height", "400", "--spp", "4", "--tile-size",
+         "16", "--threads", "1", "--journal-after", "0", "-o", "out.exr"},
+        120.0, [&](pid_t pid) {
+            std::error_code ec;
+            if (std::filesystem::file_size(m_dir / "out.exr.rayo-partial", ec) <
+                    kHeaderBytes + 20 * kSlotBytes ||
+                ec)
+                return false;
+            ::kill(pid, SIGKILL);
+            killed = true;
+            return true;
+        });
     ASSERT_TRUE(killed) << r.output;
     EXPECT_EQ(r.shell_status, 128 + SIGKILL);
     EXPECT_FALSE(std::filesystem::exists(m_dir / "out.exr"));

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -55,9 +56,12 @@ class PartialRenderTest : public ::testing::Test {
         return bits;
     }
 
-    // A run of a new partial render that records `indices` of `grid` and ends.
-    void record_tiles(const TileGrid& grid, const std::vector<int>& indices) const {
-        auto partial = PartialRender::create(m_output, grid, m_fingerprint);
+    // A run of a new partial render that records `indices` of `grid` and ends; tiles are kept
+    // from `keep_after` on.
+    void record_tiles(const TileGrid& grid, const std::vector<int>& indices,
+                      std::chrono::steady_clock::duration keep_after =
+                          std::chrono::steady_clock::duration(0)) const {
+        auto partial = PartialRender::create(m_output, grid, m_fingerprint, keep_after);
         Film sink(grid.image_width(), grid.image_height());
         auto recorder = partial->recording_sink(sink);
         recorder->begin(grid);
@@ -172,6 +176,25 @@ TEST_F(PartialRenderTest, NoTileNoFile) {
     const TileGrid grid(64, 64, 16);
     record_tiles(grid, {});
     EXPECT_TRUE(fs::is_empty(m_dir));
+}
+
+// Tiles that finish before the partial render's keep_after (rayo render --journal-after) are
+// not kept: a render shorter than that leaves no file. The sink still receives every tile.
+TEST_F(PartialRenderTest, TilesBeforeKeepAfterAreNotKept) {
+    const TileGrid grid(64, 64, 16);
+    record_tiles(grid, {0, 1, 2}, std::chrono::hours(1));
+    EXPECT_TRUE(fs::is_empty(m_dir));
+
+    auto partial = PartialRender::create(m_output, grid, m_fingerprint, std::chrono::hours(1));
+    Film sink(grid.image_width(), grid.image_height());
+    auto recorder = partial->recording_sink(sink);
+    recorder->begin(grid);
+    const std::vector<float> pixels = tile_pixels(grid, 3);
+    recorder->write_tile(grid.tile(3), pixels.data());
+    partial->flush();
+    EXPECT_EQ(partial->tiles_done(), 0);
+    const Tile tile = grid.tile(3);
+    EXPECT_EQ(bits_of({sink.rgb(tile.x0, tile.y0).x}), bits_of({pixels[0]}));
 }
 
 // Every entry that differs is named, with both values; entries only one side has too.
