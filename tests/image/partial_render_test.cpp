@@ -7,12 +7,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <limits>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/error.h"
@@ -195,6 +197,29 @@ TEST_F(PartialRenderTest, TilesBeforeKeepAfterAreNotKept) {
     EXPECT_EQ(partial->tiles_done(), 0);
     const Tile tile = grid.tile(3);
     EXPECT_EQ(bits_of({sink.rgb(tile.x0, tile.y0).x}), bits_of({pixels[0]}));
+}
+
+// A render that outlives the delay: the tiles before it are missing from the partial render,
+// those after it are kept and come back on resume.
+TEST_F(PartialRenderTest, TilesAfterKeepAfterAreKept) {
+    const TileGrid grid(64, 64, 16);
+    {
+        auto partial =
+            PartialRender::create(m_output, grid, m_fingerprint, std::chrono::seconds(1));
+        Film sink(grid.image_width(), grid.image_height());
+        auto recorder = partial->recording_sink(sink);
+        recorder->begin(grid);
+        recorder->write_tile(grid.tile(0), tile_pixels(grid, 0).data());
+        std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+        recorder->write_tile(grid.tile(1), tile_pixels(grid, 1).data());
+        partial->flush();
+        EXPECT_EQ(partial->tiles_done(), 1);
+    }
+    auto resumed = PartialRender::resume(m_output, grid, m_fingerprint);
+    EXPECT_EQ(resumed->tiles_done(), 1);
+    const std::vector<int> missing = resumed->missing_tiles();
+    EXPECT_EQ(missing.front(), 0);
+    EXPECT_EQ(std::count(missing.begin(), missing.end(), 1), 0);
 }
 
 // Every entry that differs is named, with both values; entries only one side has too.
