@@ -910,14 +910,10 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     if (args.journal && !MpiWorld::distributed()) {
         const TileGrid grid(cam.width, cam.height, d.settings.tile_size);
         const RenderFingerprint fingerprint = render_fingerprint(args, d);
-        const std::chrono::duration<double> keep_after(
-            args.journal_after_s.value_or(kJournalAfterSeconds));
-        partial =
-            args.resume
-                ? PartialRender::resume(output, grid, fingerprint)
-                : PartialRender::create(
-                      output, grid, fingerprint,
-                      std::chrono::duration_cast<std::chrono::steady_clock::duration>(keep_after));
+        const auto keep_after = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+            std::chrono::duration<double>(args.journal_after_s.value_or(kJournalAfterSeconds)));
+        partial = args.resume ? PartialRender::resume(output, grid, fingerprint)
+                              : PartialRender::create(output, grid, fingerprint, keep_after);
         missing = partial->missing_tiles();
         apply_test_interrupt(*partial);
         if (args.resume && !args.quiet) {

@@ -218,6 +218,7 @@ TEST_F(PartialRenderTest, TilesAfterKeepAfterAreKept) {
     auto resumed = PartialRender::resume(m_output, grid, m_fingerprint);
     EXPECT_EQ(resumed->tiles_done(), 1);
     const std::vector<int> missing = resumed->missing_tiles();
+    ASSERT_FALSE(missing.empty());
     EXPECT_EQ(missing.front(), 0);
     EXPECT_EQ(std::count(missing.begin(), missing.end(), 1), 0);
 }
