@@ -10,7 +10,7 @@
 #include <string>
 
 #include "bench/lab/sphere_stability.h"
-#include "shading/whitted.h"
+#include "shading/integrators/whitted.h"
 
 int main(int argc, char** argv) {
     if (argc > 2 || (argc == 2 && std::string(argv[1]).rfind("-", 0) == 0)) {

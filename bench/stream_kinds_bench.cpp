@@ -30,7 +30,7 @@
 #include "core/camera.h"
 #include "core/embree_ray.h"
 #include "core/render.h"
-#include "shading/whitted.h"
+#include "shading/integrators/whitted.h"
 
 namespace rayo {
 namespace {
@@ -94,20 +94,22 @@ const Recording& recording() {
         options.spheres = spheres.spheres;
         options.sphere_math = spheres.math;
         rec.accel = std::make_unique<Accel>(rec.description.scene, options);
-        WhittedSettings settings = rec.description.settings.whitted;
+        WhittedSettings settings = rec.description.settings.whitted();
         settings.stream_secondary = true;  // the wavefront through every depth
         WhittedIntegrator integrator(*rec.accel, rec.description.shading, settings);
         integrator.record_streams(&rec.log);
         RayCounters counters;
         Ray rays[64];
+        PixelSample samples[64];
         Vec3 radiance[64];
         for (int by = 0; by < frame; by += 8) {
             for (int bx = 0; bx < frame; bx += 8) {
                 int n = 0;
                 for (int y = by; y < by + 8; ++y) {
-                    for (int x = bx; x < bx + 8; ++x) n += pixel_ray(camera, x, y, 0, 1, rays[n]);
+                    for (int x = bx; x < bx + 8; ++x)
+                        n += pixel_ray(camera, x, y, 0, 1, rays[n], samples[n]);
                 }
-                integrator.radiance_coherent(rays, n, radiance, counters);
+                integrator.radiance_coherent(rays, samples, n, radiance, counters);
             }
         }
         for (int kind = 0; kind < 4; ++kind) {

@@ -13,6 +13,7 @@
 
 #include "core/math.h"
 #include "core/ray.h"
+#include "core/sampler.h"
 #include "core/sampling.h"
 #include "core/stats.h"
 #include "core/tile_grid.h"
@@ -94,7 +95,7 @@ class AdaptiveTile {
         CornerSample sample;
         Ray ray;
         if (!m_camera.generate_ray(film, lens, ray)) return sample;
-        sample.rgb = m_integrator.radiance(ray, m_counters);
+        sample.rgb = m_integrator.radiance(ray, PixelSample{ui, uj, 0, 1}, m_counters);
         sample.alpha = 1.0f;
         return sample;
     }

@@ -6,8 +6,11 @@
 // virtual call:
 //   camera:     int width() const; int height() const;
 //               bool generate_ray(glm::vec2 film, glm::vec2 lens, Ray& out) const;
-//   integrator: Vec3 radiance(const Ray&, RayCounters&) const;
-//               void radiance_coherent(const Ray*, int, Vec3*, RayCounters&) const;
+//   integrator: Vec3 radiance(const Ray&, const PixelSample&, RayCounters&) const;
+//               void radiance_coherent(const Ray*, const PixelSample*, int, Vec3*,
+//                                      RayCounters&) const;
+// Each camera ray comes with its PixelSample (core/sampler.h): the pixel, the sample index and
+// the stateless sampler the integrator draws its own dimensions from.
 // The result does not depend on thread count, tile size or the coherent path: every pixel's
 // samples are summed in a fixed order by the one task that owns the pixel, and the coherent
 // path computes the same values as the single-ray one. Adaptive antialiasing
@@ -25,6 +28,7 @@
 #include "core/math.h"
 #include "core/progress.h"
 #include "core/ray.h"
+#include "core/sampler.h"
 #include "core/sampling.h"
 #include "core/stats.h"
 #include "core/stop_request.h"
@@ -48,8 +52,10 @@ struct TileSettings {
 // Camera ray for sample `s` of pixel (x, y): stratified jitter on the film (the pixel centre when
 // spp = 1) and on the lens. False where the camera has no ray (e.g. outside a fisheye's circle).
 template <typename Camera>
-bool pixel_ray(const Camera& camera, int x, int y, uint32_t s, uint32_t spp, Ray& ray) {
+bool pixel_ray(const Camera& camera, int x, int y, uint32_t s, uint32_t spp, Ray& ray,
+               PixelSample& sample) {
     const auto ux = static_cast<uint32_t>(x), uy = static_cast<uint32_t>(y);
+    sample = PixelSample{ux, uy, s, spp};
     const PixelOffset o = stratified_offset(ux, uy, s, spp);
     const glm::vec2 film(static_cast<float>(x) + o.dx, static_cast<float>(y) + o.dy);
     return camera.generate_ray(film, lens_sample(ux, uy, s, spp), ray);
@@ -75,8 +81,9 @@ void render_tile(const Camera& camera, const Integrator& integrator, bool cohere
             uint32_t rays = 0;
             for (uint32_t s = 0; s < spp; ++s) {
                 Ray ray;
-                if (!pixel_ray(camera, x, y, s, spp, ray)) continue;
-                sum += integrator.radiance(ray, counters);
+                PixelSample sample;
+                if (!pixel_ray(camera, x, y, s, spp, ray, sample)) continue;
+                sum += integrator.radiance(ray, sample, counters);
                 ++rays;
             }
             store(i, sum, rays);
@@ -91,6 +98,7 @@ void render_tile(const Camera& camera, const Integrator& integrator, bool cohere
     // order as above.
     constexpr int kChunk = 64;
     Ray rays[kChunk];
+    PixelSample samples[kChunk];
     Vec3 radiance[kChunk], sum[kChunk];
     int owner[kChunk];
     uint32_t ray_count[kChunk];
@@ -109,10 +117,12 @@ void render_tile(const Camera& camera, const Integrator& integrator, bool cohere
                     for (int i = 0; i < n; ++i) {
                         const int x = tile.x0 + bx + (first + i) % block_width;
                         const int y = tile.y0 + by + (first + i) / block_width;
-                        if (!pixel_ray(camera, x, y, s, spp, rays[batch])) continue;
+                        if (!pixel_ray(camera, x, y, s, spp, rays[batch], samples[batch])) {
+                            continue;
+                        }
                         owner[batch++] = i;
                     }
-                    integrator.radiance_coherent(rays, batch, radiance, counters);
+                    integrator.radiance_coherent(rays, samples, batch, radiance, counters);
                     for (int k = 0; k < batch; ++k) {
                         sum[owner[k]] += radiance[k];
                         ++ray_count[owner[k]];

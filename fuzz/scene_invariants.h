@@ -136,8 +136,9 @@ inline void check_scene(const SceneDescription& d) {
                d.shading.fog.density >= 0.0f,
            "fog");
     expect(d.settings.spp >= 1 && d.settings.tile_size >= 1, "spp/tile size");
-    expect(d.settings.whitted.max_depth >= 0 && d.settings.whitted.max_depth <= 64, "max depth");
-    expect(finite(d.settings.whitted.min_contribution), "min contribution");
+    expect(d.settings.whitted().max_depth >= 0 && d.settings.whitted().max_depth <= 64,
+           "max depth");
+    expect(finite(d.settings.whitted().min_contribution), "min contribution");
     // The camera may still be refused here (the CLI reports that as an InputError), but it
     // must not crash, and one it accepts must respect the resolution limits.
     try {

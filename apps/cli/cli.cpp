@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "apps/cli/setting_flags.h"
+#include "apps/cli/usage_error.h"
 #include "apps/mpi/mpi_tile_distribution.h"
 #include "apps/mpi/mpi_world.h"
 #include "apps/scene/default_scene.h"
@@ -49,8 +51,6 @@ namespace {
 
 constexpr int kExitInput = 1;
 constexpr int kExitUsage = 2;
-constexpr int kMaxDepthLimit = 64;
-constexpr int kMaxSpp = 1 << 16;
 // A render keeps its tiles for --resume from this many seconds on (docs/high-resolution.md,
 // "Interrupt and resume"): a shorter render writes no OUTPUT.rayo-partial.
 constexpr double kJournalAfterSeconds = 2.0;
@@ -107,9 +107,8 @@ render options:
   -o, --output FILE        output image: .exr (linear float), .png, .tif, .jpg (display view)
                            [default: SCENE's name with .png, or default.png]
   --width W, --height H    resolution (one alone keeps the scene's aspect ratio)
-  --spp N                  samples per pixel, stratified jitter [scene's, default 1]
+@--spp@
   --threads N              worker threads [all cores]
-  --max-depth N            maximum reflection/refraction depth, 0..64 [scene's, default 5]
   --nff-light-intensity X  intensity of each NFF light without a colour, a number >= 0
                            [1/sqrt(number of lights), the SPD's rule; 1 gives unit lights]
   --view-dir X,Y,Z         model files: the direction from the model's centre to the eye
@@ -124,10 +123,10 @@ render options:
                            keeping them once as instances
   --restrict-paths         files the scene references (meshes, material libraries, glTF
                            buffers) must lie in the scene's folder tree (untrusted scenes)
-  --tile-size N            tile side in pixels, a multiple of 16 [64]
+@--tile-size@
   --sphere-method M        auto (default), user, bruteforce, embree-point, mesh:N (N 0..7:
                            20·4^N triangles per sphere)
-  --sphere-math P          stable (default), seed (seed 000's algebraic form), double
+@--sphere-math@
   --max-error-px E         auto's error budget in pixels [0.5]; the chord error of mesh
                            shapes (--shape-method)
   --shape-method M         analytic, mesh or auto: the method of every object with a mesh
@@ -136,22 +135,13 @@ render options:
   --flat-spheres           mesh:N spheres with flat facets instead of smooth normals
   --single-rays            trace camera and shadow rays one by one instead of as coherent
                            Embree streams per tile (same image; for comparisons)
-  --shadow-terminator T    offset (default): shadow rays of smooth-shaded triangles start on
-                           the surface their vertex normals imply (Hanika 2021), or none: on
-                           the flat triangle (stair-step shadows on coarse meshes)
-                           [scene's render.shadow_terminator]
-  --aa A                   stratified (spp jittered samples per pixel) or adaptive (corner
-                           subdivision, POV-Ray's recursive method; docs/antialiasing.md)
-  --aa-threshold X         adaptive: subdivide while corners differ by more than X (sum of
-                           the absolute RGBA differences), a number >= 0 [0.3]
-  --aa-depth N             adaptive: at most N subdivisions per pixel, 0..8 [3]
-  --gi G                   global illumination: none, or radiosity (a pre-pass over the
-                           surfaces' patches, the scene's "radiosity" settings; docs/radiosity.md)
-                           [scene's render.gi, default none]
+@--aa@
+@--aa-threshold@
+@--aa-depth@
+@--gi@
   --gi-view V              radiosity: smooth (vertex colours, default) or patches (flat)
   --gi-log FILE            radiosity: write the unshot energy after every shot (CSV)
-  --texture-cache MB       image textures: decoded tiles held at once, MB (docs/textures.md)
-                           [scene's render.texture_cache_mb, default 256]
+@--texture-cache@
   --display D, --view V    OCIO display and view for PNG/TIFF/JPEG [config defaults]
   --range R                clamp (default) or normalize (divide by the image maximum)
   --half                   write EXR as half float
@@ -170,7 +160,9 @@ render options:
                            work; 0 keeps every tile [2]
   --quiet                  no progress bar and no summary line
   --stats                  print the full statistics table
+  --integrator NAME        the integrator, one of the list below [scene's, default whitted]
 
+@INTEGRATORS@
 )";
 
 const char* const kInfoHelp = R"(usage: rayo info SCENE
@@ -237,7 +229,18 @@ std::string usage() {
 // `rayo COMMAND --help`: the command's usage and flags (the inputs too for commands that read a
 // scene); the texture kinds filled in from their one list (shading/texture.h).
 std::string command_help(const std::string& command) {
-    if (command == "render") return std::string(kRenderHelp) + kInputs + kOcioNote;
+    if (command == "render") {
+        // The declared settings' lines come from their declarations (apps/cli/setting_flags.h).
+        std::string text = kRenderHelp;
+        for (size_t at; (at = text.find("@--")) != std::string::npos;) {
+            const size_t end = text.find("@\n", at + 1);
+            std::string lines = setting_help(text.substr(at + 1, end - at - 1));
+            text.replace(at, end + 2 - at, lines);
+        }
+        const std::string slot = "@INTEGRATORS@\n";
+        text.replace(text.find(slot), slot.size(), integrators_help());
+        return text + "\n" + kInputs + kOcioNote;
+    }
     if (command == "info") return std::string(kInfoHelp) + kInputs;
     if (command == "bench") return kBenchHelp;
     if (command == "preview") return std::string(kPreviewHelp) + kInputs + kOcioNote;
@@ -248,10 +251,6 @@ std::string command_help(const std::string& command) {
     }
     return usage();  // an unknown command: the overview
 }
-
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
 
 int parse_int(const std::string& flag, const std::string& text, int min_value, int max_value) {
     int value = 0;
@@ -314,22 +313,18 @@ class ArgCursor {
 struct RenderArgs {
     std::optional<std::string> scene_path;
     std::optional<std::string> output;
-    std::optional<int> width, height, spp, threads, max_depth, tile_size;
-    std::optional<SphereMath> sphere_math;
+    std::optional<int> width, height, threads;
+    // The declared settings' flags (apps/cli/setting_flags.h), in order, and --integrator.
+    std::vector<SettingFlag> settings;
+    std::optional<std::string> integrator;
     std::optional<SphereRepresentation> sphere_method;
     std::optional<float> max_error_px;
     std::optional<ShapeMethod> shape_method;
-    std::optional<AntiAliasing> aa;
-    std::optional<float> aa_threshold;
-    std::optional<float> texture_cache_mb;
-    std::optional<int> aa_depth;
-    std::optional<GlobalIllumination> gi;
     bool gi_view_patches = false;
     std::optional<std::string> gi_log;
     SceneLoadOptions load_options;
     bool flat_spheres = false;
     bool single_rays = false;
-    std::optional<bool> terminator_offset;
     OutputOptions output_options;
     StreamMode stream = StreamMode::Auto;
     bool resume = false;
@@ -344,31 +339,25 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
     ArgCursor cursor(args);
     while (cursor.next()) {
         const std::string& a = cursor.current();
+        if (const FlagArity arity = setting_flag_arity(a); arity != FlagArity::None) {
+            SettingFlag flag{a, arity == FlagArity::Value ? cursor.value() : std::string()};
+            check_setting_flag(flag);  // refused here, before the scene is read
+            r.settings.push_back(std::move(flag));
+            continue;
+        }
+        if (a == "--integrator") {
+            r.integrator = cursor.value();
+            integrator_flag(*r.integrator);
+            continue;
+        }
         if (a == "-o" || a == "--output") {
             r.output = cursor.value();
         } else if (a == "--width") {
             r.width = parse_int(a, cursor.value(), 1, kMaxImageSide);
         } else if (a == "--height") {
             r.height = parse_int(a, cursor.value(), 1, kMaxImageSide);
-        } else if (a == "--spp") {
-            r.spp = parse_int(a, cursor.value(), 1, kMaxSpp);
         } else if (a == "--threads") {
             r.threads = parse_int(a, cursor.value(), 1, 4096);
-        } else if (a == "--max-depth") {
-            r.max_depth = parse_int(a, cursor.value(), 0, kMaxDepthLimit);
-        } else if (a == "--tile-size") {
-            const std::string& text = cursor.value();
-            r.tile_size = parse_int(a, text, kCoherentBlock, kMaxTileSize);
-            if (!valid_tile_size(*r.tile_size)) {
-                throw UsageError(a + ": expected " + tile_size_expectation() + ", got '" + text +
-                                 "'");
-            }
-        } else if (a == "--sphere-math") {
-            const std::string& m = cursor.value();
-            r.sphere_math = parse_sphere_math(m);
-            if (!r.sphere_math) {
-                throw UsageError(a + ": expected 'stable', 'seed' or 'double', got '" + m + "'");
-            }
         } else if (a == "--sphere-method") {
             const std::string& m = cursor.value();
             r.sphere_method = parse_sphere_method(m);
@@ -384,36 +373,6 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
             r.shape_method = parse_shape_method(m);
             if (!r.shape_method) {
                 throw UsageError(a + ": expected 'analytic', 'mesh' or 'auto', got '" + m + "'");
-            }
-        } else if (a == "--aa") {
-            const std::string& m = cursor.value();
-            if (m == "stratified") {
-                r.aa = AntiAliasing::Stratified;
-            } else if (m == "adaptive") {
-                r.aa = AntiAliasing::Adaptive;
-            } else {
-                throw UsageError(a + ": expected 'stratified' or 'adaptive', got '" + m + "'");
-            }
-        } else if (a == "--texture-cache") {
-            r.texture_cache_mb = static_cast<float>(parse_number(a, cursor.value(), 1.0, 1e6));
-        } else if (a == "--aa-threshold") {
-            r.aa_threshold = static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
-        } else if (a == "--shadow-terminator") {
-            const std::string& m = cursor.value();
-            if (m != "offset" && m != "none") {
-                throw UsageError(a + ": expected 'offset' or 'none', got '" + m + "'");
-            }
-            r.terminator_offset = m == "offset";
-        } else if (a == "--aa-depth") {
-            r.aa_depth = parse_int(a, cursor.value(), 0, kMaxAdaptiveDepth);
-        } else if (a == "--gi") {
-            const std::string& m = cursor.value();
-            if (m == "none") {
-                r.gi = GlobalIllumination::None;
-            } else if (m == "radiosity") {
-                r.gi = GlobalIllumination::Radiosity;
-            } else {
-                throw UsageError(a + ": expected 'none' or 'radiosity', got '" + m + "'");
             }
         } else if (a == "--gi-view") {
             const std::string& m = cursor.value();
@@ -505,21 +464,12 @@ void apply_overrides(const RenderArgs& args, SceneDescription& d) {
             camera.width = std::max(1, static_cast<int>(std::lround(*args.height * aspect)));
         }
     }
-    if (args.spp) d.settings.spp = *args.spp;
-    if (args.max_depth) d.settings.whitted.max_depth = *args.max_depth;
-    if (args.tile_size) d.settings.tile_size = *args.tile_size;
-    if (args.sphere_math) d.settings.sphere_math = *args.sphere_math;
+    apply_setting_flags(args.integrator, args.settings, d.settings);
     if (args.sphere_method) d.settings.spheres = *args.sphere_method;
     if (args.flat_spheres) d.settings.spheres.mesh_smooth = false;
     if (args.single_rays) d.settings.coherent = false;
     if (args.max_error_px) d.settings.max_error_px = *args.max_error_px;
     if (args.shape_method) d.settings.shape_method = *args.shape_method;
-    if (args.aa) d.settings.aa = *args.aa;
-    if (args.aa_threshold) d.settings.adaptive.threshold = *args.aa_threshold;
-    if (args.texture_cache_mb) d.settings.texture_cache_mb = *args.texture_cache_mb;
-    if (args.aa_depth) d.settings.adaptive.depth = *args.aa_depth;
-    if (args.terminator_offset) d.settings.whitted.terminator_offset = *args.terminator_offset;
-    if (args.gi) d.settings.gi = *args.gi;
     if (args.gi_view_patches) d.settings.gi_view_patches = true;
 }
 
@@ -601,27 +551,21 @@ RenderFingerprint render_fingerprint(const RenderArgs& args, const SceneDescript
     if (model.camera) framing << ", camera " << *model.camera;
     if (model.auto_lights) framing << ", auto lights";
     if (!model.instances) framing << ", no instances";
-    return {
+    std::vector<std::pair<std::string, std::string>> entries = {
         {"rayo version", RAYO_VERSION},
         {"scene contents", contents},
         {"resolution",
          std::to_string(d.scene.camera.width) + "x" + std::to_string(d.scene.camera.height)},
-        {"tile size", std::to_string(s.tile_size)},
-        {"antialiasing", s.aa == AntiAliasing::Adaptive ? "adaptive" : "stratified"},
-        {"spp", std::to_string(s.spp)},
-        {"aa threshold", text(s.adaptive.threshold)},
-        {"aa depth", std::to_string(s.adaptive.depth)},
-        {"max depth", std::to_string(s.whitted.max_depth)},
         {"sphere method", sphere_method_name(s.spheres) + (s.spheres.mesh_smooth ? "" : " flat")},
-        {"sphere math", sphere_math_name(s.sphere_math)},
         {"max error px", text(s.max_error_px)},
-        {"gi", s.gi == GlobalIllumination::Radiosity ? "radiosity" : "none"},
         {"gi view", s.gi_view_patches ? "patches" : "smooth"},
         {"nff light intensity", light.str()},
         {"shape method", s.shape_method ? shape_method_name(*s.shape_method) : "per object"},
-        {"shadow terminator", s.whitted.terminator_offset ? "offset" : "none"},
         {"model framing", framing.str()},
     };
+    // The declared settings (spp, antialiasing, the integrator and its own, ...).
+    for (auto& entry : describe_settings(s)) entries.push_back(std::move(entry));
+    return entries;
 }
 
 // Destroys a stream whose render was interrupted, which removes its temporary file. Closing
@@ -764,7 +708,7 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
             << " (Embree hit filters: alpha below the cutoff is no hit)\n";
     }
     out << ""
-        << "  max depth                   " << d.settings.whitted.max_depth << "\n"
+        << "  integrator                  " << integrator_summary(d.settings.integrator) << "\n"
         << "  time parse                  " << format_duration(parse_s) << "\n"
         << "  time BVH build              " << format_duration(r.bvh_seconds) << "\n"
         << "  time render                 " << format_duration(r.render_seconds) << "\n"

@@ -222,6 +222,32 @@ std::string describe(const Json& value) {
     return text;
 }
 
+// A JSON value as a declared setting reads it (core/setting.h).
+SettingValue setting_value(const Json& value) {
+    SettingValue v;
+    v.shown = describe(value);
+    if (value.is_number_integer()) {
+        v.type = SettingValue::Type::Integer;
+        // Unsigned values above the long long range saturate (and fail any declared bound).
+        v.integer = value.is_number_unsigned() && value.get<unsigned long long>() >
+                                                      static_cast<unsigned long long>(
+                                                          std::numeric_limits<long long>::max())
+                        ? std::numeric_limits<long long>::max()
+                        : value.get<long long>();
+        v.number = value.get<double>();
+    } else if (value.is_number()) {
+        v.type = SettingValue::Type::Number;
+        v.number = value.get<double>();
+    } else if (value.is_string()) {
+        v.type = SettingValue::Type::Text;
+        v.text = value.get<std::string>();
+    } else if (value.is_boolean()) {
+        v.type = SettingValue::Type::Boolean;
+        v.boolean = value.get<bool>();
+    }
+    return v;
+}
+
 std::string join(const std::vector<std::string>& names) {
     std::string out;
     for (size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + names[i];
@@ -491,6 +517,29 @@ class SceneParser {
             read(parser.require(object, pointer, name, expected(kind)), child(pointer, name),
                  member, kind);
         }
+        // Declared settings (core/setting.h): checked by the declaration, as on the command line.
+        const Json* setting(const SettingInfo& info) const {
+            return parser.find(object, info.name);
+        }
+        void check(const SettingInfo& info, const std::optional<std::string>& problem) const {
+            if (problem) parser.fail(child(pointer, info.name), *problem);
+        }
+        void integer(const SettingInfo& info, int& member, long long min, long long max) {
+            if (const Json* v = setting(info))
+                check(info, read_integer(setting_value(*v), min, max, member));
+        }
+        void real(const SettingInfo& info, float& member, double min, double max) {
+            if (const Json* v = setting(info))
+                check(info, read_real(setting_value(*v), min, max, member));
+        }
+        void toggle(const SettingInfo& info, bool& member) {
+            if (const Json* v = setting(info)) check(info, read_toggle(setting_value(*v), member));
+        }
+        template <typename E>
+        void choice(const SettingInfo& info, E& member, std::initializer_list<Choice<E>> choices) {
+            if (const Json* v = setting(info))
+                check(info, read_choice(setting_value(*v), choices, member));
+        }
         template <typename T>
         void optional(const char* name, T& member, FieldKind kind) {
             if (const Json* value = parser.find(object, name)) {
@@ -508,6 +557,22 @@ class SceneParser {
         template <typename T>
         void optional(const char* name, T&, FieldKind) {
             names.push_back(name);
+        }
+        template <typename T, typename... Rest>
+        void integer(const SettingInfo& info, T&, Rest...) {
+            names.push_back(info.name);
+        }
+        template <typename T, typename... Rest>
+        void real(const SettingInfo& info, T&, Rest...) {
+            names.push_back(info.name);
+        }
+        template <typename T>
+        void toggle(const SettingInfo& info, T&) {
+            names.push_back(info.name);
+        }
+        template <typename E>
+        void choice(const SettingInfo& info, E&, std::initializer_list<Choice<E>>) {
+            names.push_back(info.name);
         }
     };
 
@@ -655,6 +720,7 @@ class SceneParser {
 
     void parse_camera(const Json& value, const std::string& pointer, CameraDesc& camera) const;
     void parse_render(const Json& value, const std::string& pointer, RenderSettings& s) const;
+    IntegratorSettings parse_integrator(const Json& value, const std::string& pointer) const;
     void parse_materials(const Json& value, const std::string& pointer, ShadingScene& shading);
     void parse_textures(const Json& value, const std::string& pointer, ShadingScene& shading);
     Texture parse_texture(const Json& value, const std::string& pointer,
@@ -844,59 +910,44 @@ void SceneParser::parse_camera(const Json& value, const std::string& pointer,
 void SceneParser::parse_render(const Json& value, const std::string& pointer,
                                RenderSettings& s) const {
     require_object(value, pointer, "a render settings object");
-    check_keys(
-        value, pointer,
-        {"spp", "max_depth", "min_contribution", "tile_size", "sphere_math", "sphere_method", "aa",
-         "aa_threshold", "aa_depth", "shadows", "shadow_terminator", "gi", "texture_cache_mb"});
-    if (const Json* v = find(value, "texture_cache_mb")) {
-        // The image-texture cache (docs/textures.md): at least 1 MB, at most 1 TB.
-        s.texture_cache_mb = real(*v, child(pointer, "texture_cache_mb"));
-        if (!(s.texture_cache_mb >= 1.0f && s.texture_cache_mb <= 1e6f)) {
-            fail(child(pointer, "texture_cache_mb"),
-                 "expected a cache size in MB from 1 to 1000000, got " + describe(*v));
+    // The declared settings (RenderSettings::fields), "sphere_method" (its own syntax), the
+    // integrator, and the Whitted integrator's settings, which the render object also takes
+    // directly (the form of scenes written before integrators were registered).
+    static const std::vector<std::string> keys = [] {
+        FieldNames names;
+        RenderSettings().fields(names);
+        WhittedSettings().fields(names);
+        names.names.push_back("sphere_method");
+        names.names.push_back("integrator");
+        return names.names;
+    }();
+    check_keys(value, pointer, keys);
+    FieldReader reader{*this, value, pointer};
+    s.fields(reader);
+    if (const std::optional<FieldProblem> problem = s.problem()) {
+        fail(child(pointer, problem->field), problem->message);
+    }
+    const Json* integrator = find(value, "integrator");
+    if (integrator) s.integrator = parse_integrator(*integrator, child(pointer, "integrator"));
+    if (auto* whitted = std::get_if<WhittedSettings>(&s.integrator)) {
+        // The direct keys first, then the integrator object's, which win.
+        WhittedSettings direct = *whitted;
+        direct.fields(reader);
+        if (integrator) {
+            FieldReader object_reader{*this, *integrator, child(pointer, "integrator")};
+            direct.fields(object_reader);
         }
-    }
-    if (const Json* v = find(value, "shadows")) {
-        s.whitted.shadows =
-            choice(*v, child(pointer, "shadows"), {"opaque", "filtered"}) == "filtered"
-                ? ShadowMode::Filtered
-                : ShadowMode::Opaque;
-    }
-    if (const Json* v = find(value, "shadow_terminator")) {
-        s.whitted.terminator_offset =
-            choice(*v, child(pointer, "shadow_terminator"), {"offset", "none"}) == "offset";
-    }
-    if (const Json* v = find(value, "spp")) s.spp = integer(*v, child(pointer, "spp"), 1, 1 << 20);
-    if (const Json* v = find(value, "gi")) {
-        s.gi = choice(*v, child(pointer, "gi"), {"none", "radiosity"}) == "radiosity"
-                   ? GlobalIllumination::Radiosity
-                   : GlobalIllumination::None;
-    }
-    if (const Json* v = find(value, "max_depth")) {
-        s.whitted.max_depth = integer(*v, child(pointer, "max_depth"), 0, 64);
-    }
-    s.whitted.min_contribution =
-        real_or(value, pointer, "min_contribution", s.whitted.min_contribution, Bound::NonNegative);
-    if (const Json* v = find(value, "tile_size")) {
-        s.tile_size = integer(*v, child(pointer, "tile_size"), kCoherentBlock, kMaxTileSize);
-        if (!valid_tile_size(s.tile_size)) {
-            fail(child(pointer, "tile_size"),
-                 "expected " + tile_size_expectation() + ", got " + describe(*v));
+        *whitted = direct;
+    } else {
+        FieldNames whitted_names;
+        WhittedSettings().fields(whitted_names);
+        for (const std::string& key : whitted_names.names) {
+            if (find(value, key.c_str())) {
+                fail(child(pointer, key),
+                     "a setting of the \"whitted\" integrator, but this render's integrator is \"" +
+                         std::string(integrator_name(s.integrator)) + "\"");
+            }
         }
-    }
-    if (const Json* v = find(value, "aa")) {
-        s.aa = choice(*v, child(pointer, "aa"), {"stratified", "adaptive"}) == "adaptive"
-                   ? AntiAliasing::Adaptive
-                   : AntiAliasing::Stratified;
-    }
-    s.adaptive.threshold =
-        real_or(value, pointer, "aa_threshold", s.adaptive.threshold, Bound::NonNegative);
-    if (const Json* v = find(value, "aa_depth")) {
-        s.adaptive.depth = integer(*v, child(pointer, "aa_depth"), 0, kMaxAdaptiveDepth);
-    }
-    if (const Json* v = find(value, "sphere_math")) {
-        s.sphere_math = *parse_sphere_math(
-            choice(*v, child(pointer, "sphere_math"), {"stable", "seed", "double"}));
     }
     if (const Json* v = find(value, "sphere_method")) {
         const std::string where = child(pointer, "sphere_method");
@@ -911,6 +962,22 @@ void SceneParser::parse_render(const Json& value, const std::string& pointer,
         }
         s.spheres = *method;
     }
+}
+
+IntegratorSettings SceneParser::parse_integrator(const Json& value,
+                                                 const std::string& pointer) const {
+    require_object(value, pointer, "an integrator object {\"type\": ..., settings...}");
+    const Json& type = require(value, pointer, "type", "an integrator name");
+    const std::string where = child(pointer, "type");
+    const std::optional<IntegratorSettings> named =
+        type.is_string() ? integrator_named(type.get<std::string>()) : std::nullopt;
+    if (!named) fail(where, "expected one of " + integrator_names() + ", got " + describe(type));
+    return std::visit(
+        [&](const auto& defaults) -> IntegratorSettings {
+            using S = std::decay_t<decltype(defaults)>;
+            return read_record<S>(value, pointer, {"type"});
+        },
+        *named);
 }
 
 // Material 0 is always "default": the scene's own when it defines one, else Material{}.

@@ -246,7 +246,7 @@ class NffParser {
               const NffOptions& options)
         : m_reader(text, source), m_info(info), m_options(options) {
         m_out.source = source;
-        m_out.settings.whitted.max_depth = 5;  // the project's default for NFF scenes
+        m_out.settings.whitted().max_depth = 5;  // the project's default for NFF scenes
     }
 
     SceneDescription parse() {

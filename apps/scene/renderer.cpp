@@ -18,8 +18,8 @@
 #include "core/film.h"
 #include "core/render.h"
 #include "shading/cutouts.h"
+#include "shading/integrators/integrator.h"
 #include "shading/radiosity_field.h"
-#include "shading/whitted.h"
 
 namespace rayo {
 namespace {
@@ -190,13 +190,11 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
         radiosity->set_flat(description.settings.gi_view_patches);
     }
 
-    WhittedSettings whitted = description.settings.whitted;
+    IntegratorContext context{accel, description.shading, radiosity.get(), images.get()};
     if (images) {
-        whitted.pixel_spread =
+        context.pixel_spread =
             camera.pixel_angle() / std::sqrt(static_cast<float>(description.settings.spp));
     }
-    const WhittedIntegrator integrator(accel, description.shading, whitted, radiosity.get(),
-                                       images.get());
     if (sink == nullptr && writes_image) result.film = Film(camera.width(), camera.height());
     TileSink& target = sink ? *sink : result.film;
     TileSettings settings;
@@ -223,15 +221,30 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
         if (tiles && tiles->empty()) {
             target.begin(grid);
             target.finish();
-        } else if (distribution == nullptr) {
-            result.counters = render_tiles(camera, integrator, settings, target, &progress,
-                                           tiles ? *tiles : std::vector<int>{});
         } else {
-            const auto render_chunk = [&](const std::vector<int>& list, TileSink& chunk_sink) {
-                return render_tiles(camera, integrator, settings, chunk_sink, nullptr, list);
-            };
-            result.counters = distribution->render(grid, {}, render_chunk, target, &progress);
-            result.processes = distribution->work();
+            // The one dispatch of the render: the registered integrator's type picks the tile
+            // loop's instantiation (shading/integrators/integrator.h); no virtual call per ray.
+            std::visit(
+                [&](const auto& integrator_settings) {
+                    using Integrator =
+                        typename std::decay_t<decltype(integrator_settings)>::Integrator;
+                    const Integrator integrator(context, integrator_settings);
+                    if (distribution == nullptr) {
+                        result.counters =
+                            render_tiles(camera, integrator, settings, target, &progress,
+                                         tiles ? *tiles : std::vector<int>{});
+                        return;
+                    }
+                    const auto render_chunk = [&](const std::vector<int>& list,
+                                                  TileSink& chunk_sink) {
+                        return render_tiles(camera, integrator, settings, chunk_sink, nullptr,
+                                            list);
+                    };
+                    result.counters =
+                        distribution->render(grid, {}, render_chunk, target, &progress);
+                    result.processes = distribution->work();
+                },
+                description.settings.integrator);
         }
     }
     result.render_seconds = seconds_since(start);

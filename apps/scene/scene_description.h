@@ -8,18 +8,24 @@
 #include "apps/scene/gltf_nodes.h"
 #include "core/adaptive_aa.h"
 #include "core/scene.h"
+#include "core/setting.h"
 #include "core/shape_method.h"
+#include "core/shapes/shape_fields.h"
 #include "core/sphere_method.h"
 #include "core/tile_grid.h"
+#include "shading/integrators/integrator.h"
 #include "shading/radiosity.h"
 #include "shading/shading_scene.h"
-#include "shading/whitted.h"
 
 namespace rayo {
 
 // Global illumination besides Whitted's ray tree: none, or a radiosity pre-pass whose solution
 // the diffuse surfaces show (docs/radiosity.md).
 enum class GlobalIllumination { None, Radiosity };
+
+// The largest --spp / "spp": the stratified offsets come from a 32-bit hash; more gains nothing
+// visible (docs/limits.md).
+constexpr int kMaxSpp = 1 << 16;
 
 struct RenderSettings {
     int spp = 1;
@@ -33,13 +39,61 @@ struct RenderSettings {
     bool coherent = true;  // tiles' camera and shadow rays as Embree streams (--single-rays: no)
     AntiAliasing aa = AntiAliasing::Stratified;  // "aa": stratified spp, or adaptive
     AdaptiveSettings adaptive;                   // "aa_threshold", "aa_depth"
-    WhittedSettings whitted;
+    // "render": {"integrator": {"type": ...}} and --integrator: the registered integrators
+    // (shading/integrators/integrator.h), Whitted by default.
+    IntegratorSettings integrator;
     GlobalIllumination gi = GlobalIllumination::None;  // "gi", --gi
     RadiositySettings radiosity;                       // the top-level "radiosity" object
     bool gi_view_patches = false;                      // --gi-view patches: flat patches
     // The image-texture cache's limit ("texture_cache_mb", --texture-cache): decoded tiles
     // held at once by the render's TextureSystem (shading/image_texture.h).
     float texture_cache_mb = kDefaultTextureCacheMB;
+
+    // The Whitted integrator's settings (std::get: only when it is the one in use).
+    WhittedSettings& whitted() { return std::get<WhittedSettings>(integrator); }
+    const WhittedSettings& whitted() const { return std::get<WhittedSettings>(integrator); }
+
+    // The "render" object's settings that are also command-line flags, declared once
+    // (core/setting.h): the JSON reader and the command line both read them from here.
+    template <typename F>
+    void fields(F& f) {
+        f.integer({"spp", "samples per pixel, stratified jitter"}, spp, 1, kMaxSpp);
+        f.integer({"tile_size", "tile side in pixels, a multiple of 16"}, tile_size, kCoherentBlock,
+                  kMaxTileSize);
+        f.choice({"aa",
+                  "stratified (spp jittered samples per pixel) or adaptive (corner subdivision, "
+                  "POV-Ray's recursive method; docs/antialiasing.md)"},
+                 aa,
+                 {{"stratified", AntiAliasing::Stratified}, {"adaptive", AntiAliasing::Adaptive}});
+        f.real({"aa_threshold",
+                "adaptive: subdivide while corners differ by more than this (sum of the absolute "
+                "RGBA differences)"},
+               adaptive.threshold, 0.0, 1e30);
+        f.integer({"aa_depth", "adaptive: at most this many subdivisions per pixel"},
+                  adaptive.depth, 0, kMaxAdaptiveDepth);
+        f.choice(
+            {"gi",
+             "global illumination: none, or radiosity (a pre-pass over the surfaces' "
+             "patches, the scene's \"radiosity\" settings; docs/radiosity.md)"},
+            gi, {{"none", GlobalIllumination::None}, {"radiosity", GlobalIllumination::Radiosity}});
+        f.real({"texture_cache_mb",
+                "image textures: decoded tiles held at once, MB (docs/textures.md)",
+                "--texture-cache"},
+               texture_cache_mb, 1.0, 1e6);
+        f.choice({"sphere_math", "stable (default), seed (seed 000's algebraic form) or double"},
+                 sphere_math,
+                 {{"stable", SphereMath::Stable},
+                  {"seed", SphereMath::Seed},
+                  {"double", SphereMath::Double}});
+    }
+    // What the fields cannot say alone.
+    std::optional<FieldProblem> problem() const {
+        if (!valid_tile_size(tile_size)) {
+            return FieldProblem{"tile_size", "expected " + tile_size_expectation() + ", got " +
+                                                 std::to_string(tile_size)};
+        }
+        return std::nullopt;
+    }
 };
 
 struct SceneDescription {

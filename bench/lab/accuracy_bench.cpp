@@ -15,7 +15,7 @@
 #include "bench/lab/sphere_stability.h"
 #include "core/accel.h"
 #include "core/error.h"
-#include "shading/whitted.h"
+#include "shading/integrators/whitted.h"
 
 namespace rayo {
 namespace {

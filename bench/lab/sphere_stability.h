@@ -136,7 +136,7 @@ std::vector<StabilityRow> run_quadric_study(StabilityConfig c);
 enum class OffsetMethod {
     None,            // origin = the hit point
     FixedEpsilon,    // origin = hit point + kFixedOffset·n
-    PositionScaled,  // rayo's offset_ray_origin (shading/whitted.h), passed in as a function
+    PositionScaled,  // rayo's offset_ray_origin (shading/integrators/whitted.h), passed in as a function
 };
 const char* offset_method_name(OffsetMethod m);
 constexpr float kFixedOffset = 1e-4f;

@@ -14,7 +14,7 @@
 //     C += T·α·c, T *= 1 − α. For a constant σ and c this is exactly c·(1 − e^(−σL)) with
 //     transmittance e^(−σL). Not in the Embree scene: the integrator composites every ray's
 //     segment over what lies behind it, C + T·behind (composite_volumes below,
-//     shading/whitted.cpp).
+//     shading/integrators/whitted.cpp).
 #include <cmath>
 #include <cstddef>
 #include <cstdint>

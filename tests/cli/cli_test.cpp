@@ -156,7 +156,7 @@ TEST_F(CliTest, BadFlagsAreRefusedWithoutOutput) {
         {"render --threads 0 -o x.png", "--threads: expected an integer"},
         {"render --max-depth 1000 -o x.png", "--max-depth: expected an integer in [0, 64]"},
         {"render --sphere-math fast -o x.png",
-         "--sphere-math: expected 'stable', 'seed' or 'double'"},
+         "--sphere-math: expected one of \"stable\", \"seed\", \"double\", got 'fast'"},
         {"render --sphere-method mesh:9 -o x.png", "--sphere-method: expected auto, user"},
         {"render --sphere-method bvh -o x.png", "got 'bvh'"},
         {"render --max-error-px 0 -o x.png", "--max-error-px: expected a number in [1e-06"},

@@ -107,7 +107,7 @@ TEST_F(RadiosityCli, BadFlagsAreRefused) {
         const char* args;
         const char* message;
     } cases[] = {
-        {"render --gi path -o x.png", "--gi: expected 'none' or 'radiosity', got 'path'"},
+        {"render --gi path -o x.png", "--gi: expected one of \"none\", \"radiosity\", got 'path'"},
         {"render --gi-view flat -o x.png", "--gi-view: expected 'smooth' or 'patches'"},
         {"render --gi -o x.png", "got '-o'"},
     };

@@ -7,6 +7,7 @@
 #include <tbb/task_arena.h>
 
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <mutex>
 #include <set>
@@ -36,12 +37,16 @@ struct HalfCamera {
 
 // Radiance = (x, y of the film position, lens u): what the camera was asked for.
 struct EchoIntegrator {
-    Vec3 radiance(const Ray& ray, RayCounters& counters) const {
+    Vec3 radiance(const Ray& ray, const PixelSample& sample, RayCounters& counters) const {
         ++counters.camera;
+        // The sample names the pixel whose film position the camera was given.
+        EXPECT_EQ(static_cast<float>(sample.x), std::floor(ray.origin.x + 0.5f));
+        EXPECT_EQ(static_cast<float>(sample.y), std::floor(ray.origin.y + 0.5f));
         return Vec3(ray.origin.x, ray.origin.y, ray.direction.x);
     }
-    void radiance_coherent(const Ray* rays, int count, Vec3* out, RayCounters& counters) const {
-        for (int i = 0; i < count; ++i) out[i] = radiance(rays[i], counters);
+    void radiance_coherent(const Ray* rays, const PixelSample* samples, int count, Vec3* out,
+                           RayCounters& counters) const {
+        for (int i = 0; i < count; ++i) out[i] = radiance(rays[i], samples[i], counters);
     }
 };
 

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "core/shapes/icosphere.h"
-#include "shading/whitted.h"
+#include "shading/integrators/whitted.h"
 
 namespace rayo {
 namespace {

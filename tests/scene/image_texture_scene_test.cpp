@@ -16,7 +16,7 @@
 #include "apps/scene/renderer.h"
 #include "core/accel.h"
 #include "core/error.h"
-#include "shading/whitted.h"
+#include "shading/integrators/whitted.h"
 #include "tests/scene/gltf_test_writer.h"
 #include "tests/scene/json_error.h"
 #include "tests/scene/scene_test_files.h"
@@ -65,7 +65,8 @@ struct QuadScene {
     Vec3 at(float x, float y) const {
         const Accel accel(d.scene, AccelOptions{});
         ImageTextures images(d.shading.materials, kDefaultTextureCacheMB);
-        const WhittedIntegrator integrator(accel, d.shading, d.settings.whitted, nullptr, &images);
+        const WhittedIntegrator integrator(accel, d.shading, d.settings.whitted(), nullptr,
+                                           &images);
         Ray ray;
         ray.origin = Vec3(x, y, 5.0f);
         ray.direction = Vec3(0.0f, 0.0f, -1.0f);

@@ -141,8 +141,8 @@ TEST(JsonLoaderFull, EveryFieldParsedToExactValues) {
     EXPECT_EQ(c.height, 200);
 
     EXPECT_EQ(d.settings.spp, 4);
-    EXPECT_EQ(d.settings.whitted.max_depth, 7);
-    EXPECT_EQ(d.settings.whitted.min_contribution, 0.25f);
+    EXPECT_EQ(d.settings.whitted().max_depth, 7);
+    EXPECT_EQ(d.settings.whitted().min_contribution, 0.25f);
     EXPECT_EQ(d.settings.tile_size, 32);
     EXPECT_EQ(d.settings.sphere_math, SphereMath::Seed);
 
@@ -219,8 +219,8 @@ TEST(JsonLoaderDefaults, MinimalSceneGetsDocumentedDefaults) {
     EXPECT_EQ(c.width, 640);
     EXPECT_EQ(c.height, 480);
     EXPECT_EQ(d.settings.spp, 1);
-    EXPECT_EQ(d.settings.whitted.max_depth, 5);
-    EXPECT_EQ(d.settings.whitted.min_contribution, 1e-3f);
+    EXPECT_EQ(d.settings.whitted().max_depth, 5);
+    EXPECT_EQ(d.settings.whitted().min_contribution, 1e-3f);
     EXPECT_EQ(d.settings.tile_size, 64);
     EXPECT_EQ(d.settings.sphere_math, SphereMath::Stable);
     expect_vec3(d.shading.background, 0, 0, 0, 0);

@@ -11,7 +11,7 @@
 #include "apps/scene/json_loader.h"
 #include "apps/scene/renderer.h"
 #include "core/accel.h"
-#include "shading/whitted.h"
+#include "shading/integrators/whitted.h"
 #include "tests/test_helpers.h"
 
 namespace rayo {
@@ -29,7 +29,7 @@ struct Tracer {
     explicit Tracer(const std::string& text)
         : description(load(text)),
           accel(description.scene, options()),
-          integrator(accel, description.shading, description.settings.whitted) {}
+          integrator(accel, description.shading, description.settings.whitted()) {}
     static AccelOptions options() {
         AccelOptions o;
         o.spheres = SphereRepresentation{SphereMethod::User};

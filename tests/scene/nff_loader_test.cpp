@@ -124,7 +124,7 @@ TEST(NffLoader, EveryEntityCounts) {
     expect_vec3(d.shading.background, 0.1f, 0.2f, 0.3f);
     expect_vec3(d.shading.ambient_light, 1.0f, 1.0f, 1.0f);
     EXPECT_EQ(d.settings.spp, 1);
-    EXPECT_EQ(d.settings.whitted.max_depth, 5);
+    EXPECT_EQ(d.settings.whitted().max_depth, 5);
 }
 
 TEST(NffLoader, MaterialsFollowReferenceConventions) {

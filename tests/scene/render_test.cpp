@@ -246,9 +246,9 @@ int pixels_off(const Film& film, const Vec3& expected) {
     return off;
 }
 
-// Whitted's rule (shading/whitted.cpp): total internal reflection sends the transmitted weight
-// into the reflected ray. Each pixel is then transmit (in) × transmit (TIR) × transmit (out) ×
-// the target, 0.8³·target, with exactly one TIR, one reflection and two refractions per pixel.
+// Whitted's rule (shading/integrators/whitted.cpp): total internal reflection sends the transmitted
+// weight into the reflected ray. Each pixel is then transmit (in) × transmit (TIR) × transmit (out)
+// × the target, 0.8³·target, with exactly one TIR, one reflection and two refractions per pixel.
 // Without TIR (n = 1.3) the same path gives 0.8²·background and no TIR at all.
 TEST(RenderTransport, PrismTotallyReflectsWithTheTransmittedWeight) {
     const Vec3 target(0.25f, 0.5f, 1.0f), background(0.1f, 0.2f, 0.3f);
@@ -271,7 +271,7 @@ TEST(RenderDepth, MaxDepthZeroTracesNoSecondaryRays) {
     SceneDescription d = make_default_scene();
     d.scene.camera.width = 64;
     d.scene.camera.height = 48;
-    d.settings.whitted.max_depth = 0;
+    d.settings.whitted().max_depth = 0;
     const RenderResult r = render_scene(d, 0, false);
     EXPECT_EQ(r.counters.reflection, 0u);
     EXPECT_EQ(r.counters.refraction, 0u);

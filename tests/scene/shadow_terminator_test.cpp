@@ -11,7 +11,7 @@
 #include "apps/scene/json_loader.h"
 #include "core/accel.h"
 #include "core/shapes/icosphere.h"
-#include "shading/whitted.h"
+#include "shading/integrators/whitted.h"
 
 namespace rayo {
 namespace {
@@ -65,7 +65,7 @@ struct LitSphere {
         return o;
     }
     WhittedSettings settings(bool offset) const {
-        WhittedSettings s = description.settings.whitted;
+        WhittedSettings s = description.settings.whitted();
         s.terminator_offset = offset;
         return s;
     }

@@ -39,7 +39,7 @@ void expect_streams_match_single_rays(SceneDescription d, const std::string& nam
     if (wavefront) modes.push_back(true);
     for (bool stream_secondary : modes) {
         d.settings.coherent = true;
-        d.settings.whitted.stream_secondary = stream_secondary;
+        d.settings.whitted().stream_secondary = stream_secondary;
         const RenderResult streams = render_scene(d, 2, false);
         const std::string what = name + (stream_secondary ? " (secondary streams)" : "");
         EXPECT_TRUE(same_bits(single.film, streams.film))
@@ -82,8 +82,8 @@ TEST(StreamPaths, DeepRayTreesGiveTheSameBitsAsSingleRays) {
     d.scene.camera.height = 45;
     for (int depth : {0, 1, 3, 8}) {
         for (ShadowMode shadows : {ShadowMode::Opaque, ShadowMode::Filtered}) {
-            d.settings.whitted.max_depth = depth;
-            d.settings.whitted.shadows = shadows;
+            d.settings.whitted().max_depth = depth;
+            d.settings.whitted().shadows = shadows;
             expect_streams_match_single_rays(
                 d,
                 "depth " + std::to_string(depth) +

@@ -20,7 +20,7 @@
 #include "core/accel.h"
 #include "core/error.h"
 #include "shading/cutouts.h"
-#include "shading/whitted.h"
+#include "shading/integrators/whitted.h"
 #include "tests/scene/gltf_test_writer.h"
 #include "tests/scene/scene_test_files.h"
 
@@ -112,7 +112,7 @@ std::unique_ptr<MapScene> map_scene(const TempDir& dir, const std::vector<std::s
     if (s->cutouts->any()) options.cutouts = s->cutouts.get();
     s->accel = std::make_unique<Accel>(s->d.scene, options);
     s->integrator = std::make_unique<WhittedIntegrator>(
-        *s->accel, s->d.shading, s->d.settings.whitted, nullptr, s->images.get());
+        *s->accel, s->d.shading, s->d.settings.whitted(), nullptr, s->images.get());
     return s;
 }
 

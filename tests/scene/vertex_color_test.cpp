@@ -9,7 +9,7 @@
 
 #include "apps/scene/json_loader.h"
 #include "core/accel.h"
-#include "shading/whitted.h"
+#include "shading/integrators/whitted.h"
 
 namespace rayo {
 namespace {
@@ -27,7 +27,7 @@ Vec3 radiance_of_triangle(const std::string& obj_vertices) {
         "scene.json", dir.string());
     std::filesystem::remove_all(dir);
     const Accel accel(d.scene, AccelOptions{});
-    const WhittedIntegrator integrator(accel, d.shading, d.settings.whitted);
+    const WhittedIntegrator integrator(accel, d.shading, d.settings.whitted());
     Ray ray;
     ray.origin = Vec3(0.25f, 0.25f, 5.0f);
     ray.direction = Vec3(0.0f, 0.0f, -1.0f);

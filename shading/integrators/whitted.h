@@ -6,8 +6,12 @@
 #include <vector>
 
 #include "core/accel.h"
+#include "core/sampler.h"
+#include "core/setting.h"
+#include "core/shapes/shape_fields.h"
 #include "core/stats.h"
 #include "shading/image_texture.h"
+#include "shading/integrators/integrator_context.h"
 #include "shading/radiosity_field.h"
 #include "shading/shading_scene.h"
 
@@ -20,7 +24,17 @@ enum class ShadowMode { Opaque, Filtered };
 // A filtered shadow ray crosses at most this many transmissive surfaces; one more is occlusion.
 constexpr int kMaxShadowCrossings = 16;
 
+class WhittedIntegrator;
+
+// The Whitted integrator's settings: the first entry of the integrator registry
+// (shading/integrators/integrator.h) and the default.
 struct WhittedSettings {
+    static constexpr const char* kName = "whitted";
+    static constexpr const char* kSummary =
+        "Whitted's ray tree: the Phong local model with a shadow ray per light sample, mirror "
+        "reflection and refraction (seeds 000, 001)";
+    using Integrator = WhittedIntegrator;
+
     int max_depth = 5;               // camera ray = depth 0; no child rays beyond this depth
     float min_contribution = 1e-3f;  // children whose weight falls below this are not traced
     ShadowMode shadows = ShadowMode::Opaque;
@@ -39,6 +53,26 @@ struct WhittedSettings {
     // not faster (docs/performance.md), so it is off: the recursion from the camera rays' hits
     // on traces one ray at a time.
     bool stream_secondary = false;
+
+    // The scene-file and command-line settings (core/setting.h); pixel_spread and
+    // stream_secondary are the render's and the benchmarks', not the user's.
+    template <typename F>
+    void fields(F& f) {
+        f.integer({"max_depth", "maximum reflection/refraction depth"}, max_depth, 0, 64);
+        f.real({"min_contribution",
+                "children whose weight falls below this are not traced (seed 001's adaptive "
+                "depth)"},
+               min_contribution, 0.0, 1e30);
+        f.choice({"shadows",
+                  "opaque: any surface blocks a shadow ray; filtered: surfaces with a transmit "
+                  "colour tint it (POV-Ray's filtered shadows)"},
+                 shadows, {{"opaque", ShadowMode::Opaque}, {"filtered", ShadowMode::Filtered}});
+        f.choice({"shadow_terminator",
+                  "offset: shadow rays of smooth-shaded triangles start on the surface their "
+                  "vertex normals imply (Hanika 2021); none: on the flat triangle"},
+                 terminator_offset, {{"offset", true}, {"none", false}});
+    }
+    std::optional<FieldProblem> problem() const { return std::nullopt; }
 };
 
 // The rays of the coherent path's stream calls, call by call, by kind: what
@@ -70,6 +104,21 @@ class WhittedIntegrator {
                       const RadiosityField* radiosity = nullptr,
                       const ImageTextures* images = nullptr)
         : m_accel(accel), m_scene(scene), m_settings(s), m_radiosity(radiosity), m_images(images) {}
+    // The registry's constructor (shading/integrators/integrator.h).
+    WhittedIntegrator(const IntegratorContext& context, WhittedSettings s)
+        : WhittedIntegrator(context.accel, context.scene, with_spread(s, context.pixel_spread),
+                            context.radiosity, context.images) {}
+
+    // The tile loop's entries (core/render.h). Whitted's ray tree draws no random numbers but
+    // its area lights' points, which it hashes from the shading point (shading/light.h
+    // light_sample_u), so the pixel sample is not needed: the images stay what they were.
+    Vec3 radiance(const Ray& ray, const PixelSample&, RayCounters& counters) const {
+        return radiance(ray, counters);
+    }
+    void radiance_coherent(const Ray* rays, const PixelSample*, int count, Vec3* radiance,
+                           RayCounters& counters) const {
+        radiance_coherent(rays, count, radiance, counters);
+    }
 
     // Radiance arriving along `ray` (a camera ray: counts it as such).
     Vec3 radiance(const Ray& ray, RayCounters& counters) const;
@@ -82,6 +131,10 @@ class WhittedIntegrator {
     void record_streams(StreamLog* log) { m_log = log; }
 
   private:
+    static WhittedSettings with_spread(WhittedSettings s, float spread) {
+        s.pixel_spread = spread;
+        return s;
+    }
     // What shading a hit needs, computed once: the side the ray arrived on, normals after
     // bump mapping, the (textured) material, the spawned-ray origin.
     struct ShadingPoint {

@@ -1,4 +1,4 @@
-#include "shading/whitted.h"
+#include "shading/integrators/whitted.h"
 
 #include <tbb/enumerable_thread_specific.h>
 

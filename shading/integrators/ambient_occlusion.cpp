@@ -1,0 +1,108 @@
+#include "shading/integrators/ambient_occlusion.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/sampling.h"
+#include "shading/integrators/whitted.h"
+#include "shading/light.h"
+#include "shading/normal_mapping.h"
+
+namespace rayo {
+namespace {
+
+// An orthonormal frame around the unit vector n (Duff et al. 2017, docs/references.md).
+void orthonormal_basis(const Vec3& n, Vec3& t, Vec3& b) {
+    const float sign = std::copysign(1.0f, n.z);
+    const float a = -1.0f / (sign + n.z);
+    const float c = n.x * n.y * a;
+    t = Vec3(1.0f + sign * n.x * n.x * a, sign * c, -sign * n.x);
+    b = Vec3(c, sign + n.y * n.y * a, -n.y);
+}
+
+}  // namespace
+
+Vec3 AmbientOcclusionIntegrator::radiance(const Ray& ray, const PixelSample& sample,
+                                          RayCounters& counters) const {
+    ++counters.camera;
+    SurfaceHit hit;
+    if (!m_accel.intersect(ray, hit)) return m_scene.background;
+    const Material& material = m_scene.materials[hit.material];
+    const bool entering = glm::dot(ray.direction, hit.geometric_normal) < 0.0f;
+    const Vec3 facing_geometric = entering ? hit.geometric_normal : -hit.geometric_normal;
+    const Vec3 normal =
+        face_viewer(entering ? hit.shading_normal : -hit.shading_normal, -ray.direction);
+    const Vec3 kd = material.kd * hit.vertex_color;
+    const Vec3 origin = offset_ray_origin(hit, facing_geometric);
+    Vec3 t, b;
+    orthonormal_basis(normal, t, b);
+    const float reach =
+        m_settings.distance > 0.0f ? m_settings.distance : std::numeric_limits<float>::infinity();
+    const auto count = static_cast<uint32_t>(m_settings.samples);
+    uint32_t escaped = 0;
+    for (uint32_t k = 0; k < count; ++k) {
+        // Cosine-weighted by Malley's method: a uniform point of the unit disk lifted onto the
+        // hemisphere (the concentric map keeps the strata compact).
+        const glm::vec2 d =
+            concentric_disk(sample.stratified2d(kFirstIntegratorDimension, k, count));
+        const float z = std::sqrt(std::max(0.0f, 1.0f - d.x * d.x - d.y * d.y));
+        Ray probe;
+        probe.origin = origin;
+        probe.direction = glm::normalize(d.x * t + d.y * b + z * normal);
+        probe.tnear = 0.0f;
+        probe.tfar = reach;
+        // Below the geometric surface (a shading normal tilted past it): blocked by the surface.
+        if (glm::dot(probe.direction, facing_geometric) <= 0.0f) continue;
+        ++counters.shadow;
+        if (!m_accel.occluded(probe)) ++escaped;
+    }
+    Vec3 color = kd * (static_cast<float>(escaped) / static_cast<float>(count));
+    if (m_settings.direct) color += direct_light(hit, normal, origin, kd, sample, counters);
+    if (material.emissive() && entering) color += material.emission;
+    return color;
+}
+
+Vec3 AmbientOcclusionIntegrator::direct_light(const SurfaceHit& hit, const Vec3& normal,
+                                              const Vec3& origin, const Vec3& kd,
+                                              const PixelSample& sample,
+                                              RayCounters& counters) const {
+    Vec3 sum(0.0f);
+    for (size_t index = 0; index < m_scene.lights.size(); ++index) {
+        const Light& light = m_scene.lights[index];
+        const auto count = static_cast<uint32_t>(light_sample_count(light));
+        // Each light's points from its own pair of the sampler's dimensions.
+        const uint32_t dimension = kFirstIntegratorDimension + 2 + 2 * static_cast<uint32_t>(index);
+        for (uint32_t s = 0; s < count; ++s) {
+            LightSample ls;
+            if (!sample_light(light, hit.position, sample.stratified2d(dimension, s, count), ls)) {
+                continue;
+            }
+            const float cosine = glm::dot(normal, ls.direction);
+            if (cosine <= 0.0f) continue;
+            Vec3 radiance = ls.radiance / ls.pdf;
+            if (ls.emission_material != kNoEmissionImage && m_images) {
+                radiance *= Vec3(m_images->lookup(ls.emission_material,
+                                                  ImageTextures::Slot::Emission, ls.uv, 0.0f));
+            }
+            if (std::holds_alternative<AreaLight>(light)) radiance *= 1.0f / kPi;
+            Ray shadow;
+            shadow.origin = origin;
+            shadow.direction = ls.direction;
+            shadow.tnear = 0.0f;
+            if (ls.on_surface || std::isfinite(ls.distance)) {
+                const Vec3 offset = hit.position + ls.distance * ls.direction - origin;
+                const float length = glm::length(offset);
+                shadow.direction = offset / length;
+                shadow.tfar = length * (1.0f - 1e-5f);
+            } else {
+                shadow.tfar = std::numeric_limits<float>::infinity();
+            }
+            ++counters.shadow;
+            if (m_accel.occluded(shadow)) continue;
+            sum += kd * radiance * cosine / static_cast<float>(count);
+        }
+    }
+    return sum;
+}
+
+}  // namespace rayo

@@ -1,0 +1,104 @@
+// The registered integrators and the declared settings on the command line: --integrator and
+// the flags generated from each integrator's fields, a flag given to the wrong integrator, and
+// one declaration behind a flag and its JSON field (the same bound, the same message).
+#include <string>
+
+#include "apps/scene/scene_description.h"
+#include "tests/cli/cli_fixture.h"
+
+namespace {
+
+using rayo_test::CommandResult;
+
+class IntegratorCli : public rayo_test::CliFixture {};
+
+const char* const kNff =
+    "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 0.01\nresolution 32 24\n"
+    "b 0.1 0.2 0.3\nl 3 3 3\nf 1 0 0 0.8 0.2 20 0 1\ns 0 0 0 1\np 4\n-3 -1 -3\n3 -1 -3\n"
+    "3 -1 3\n-3 -1 3\n";
+
+TEST_F(IntegratorCli, AmbientOcclusionRendersWithItsOwnFlags) {
+    write("scene.nff", kNff);
+    const CommandResult r =
+        run("render scene.nff --integrator ambient_occlusion --ao-samples 8 --ao-distance 2 "
+            "-o ao.exr --quiet --stats");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("ambient_occlusion (samples 8, distance 2, direct off)"),
+              std::string::npos)
+        << r.output;
+    const std::vector<float> ao = read_pixels("ao.exr");
+    ASSERT_FALSE(ao.empty());
+    // The image differs from Whitted's, and the sphere's AO (kd 0.8 × the unoccluded share)
+    // never exceeds its diffuse colour.
+    ASSERT_EQ(run("render scene.nff -o whitted.exr --quiet").exit_code, 0);
+    EXPECT_NE(ao, read_pixels("whitted.exr"));
+    for (size_t i = 0; i < ao.size(); i += 4) EXPECT_LE(ao[i], 1.0f);
+}
+
+TEST_F(IntegratorCli, AFlagOfAnotherIntegratorIsRefusedBeforeAnyWork) {
+    write("scene.nff", kNff);
+    const struct {
+        const char* args;
+        const char* message;
+    } cases[] = {
+        {"--ao-samples 4",
+         "--ao-samples: a setting of the \"ambient_occlusion\" integrator, but "
+         "this render's integrator is \"whitted\" (--integrator chooses)"},
+        {"--integrator ambient_occlusion --max-depth 3",
+         "--max-depth: a setting of the \"whitted\" integrator, but this render's integrator is "
+         "\"ambient_occlusion\""},
+        {"--integrator path",
+         "--integrator: expected one of \"whitted\", \"ambient_occlusion\", "
+         "got 'path'"},
+        {"--integrator ambient_occlusion --ao-samples 0",
+         "--ao-samples: expected an integer in [1, 4096], got '0'"},
+        {"--shadows soft", "--shadows: expected one of \"opaque\", \"filtered\", got 'soft'"},
+        {"--min-contribution -1", "--min-contribution: expected a number >= 0, got '-1'"},
+    };
+    for (const auto& c : cases) {
+        const CommandResult r = run(std::string("render scene.nff -o out.png ") + c.args);
+        EXPECT_EQ(r.exit_code, 2) << c.args;
+        EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << " -> " << r.output;
+        EXPECT_EQ(listing().count("out.png"), 0u) << c.args;
+    }
+}
+
+TEST_F(IntegratorCli, AFlagAndItsJsonFieldShareOneBound) {
+    // --spp and "render": {"spp"} are one declaration (RenderSettings::fields): the same limit,
+    // the same words, whatever kMaxSpp is.
+    const std::string limit = std::to_string(rayo::kMaxSpp);
+    const std::string over = std::to_string(rayo::kMaxSpp + 1);
+    const std::string expected = "expected an integer in [1, " + limit + "], got ";
+    const CommandResult flag = run("render --spp " + over + " -o out.png");
+    EXPECT_EQ(flag.exit_code, 2);
+    EXPECT_NE(flag.output.find("--spp: " + expected + "'" + over + "'"), std::string::npos)
+        << flag.output;
+    write("over.json", "{\"rayo\": 1, \"render\": {\"spp\": " + over + "}}");
+    const CommandResult json = run("render over.json -o out.png");
+    EXPECT_EQ(json.exit_code, 1);
+    EXPECT_NE(json.output.find("over.json#/render/spp: " + expected + over), std::string::npos)
+        << json.output;
+    // The limit itself is accepted by both (a 1×1 image keeps it quick).
+    write("limit.json",
+          "{\"rayo\": 1, \"camera\": {\"width\": 1, \"height\": 1}, \"render\": "
+          "{\"spp\": " +
+              limit + "}}");
+    EXPECT_EQ(run("render limit.json -o a.exr --quiet").exit_code, 0);
+    EXPECT_EQ(run("render limit.json --spp " + limit + " -o b.exr --quiet").exit_code, 0);
+    EXPECT_EQ(listing().count("out.png"), 0u);
+}
+
+TEST_F(IntegratorCli, HelpListsEveryIntegratorWithItsFlags) {
+    const CommandResult r = run("render --help");
+    ASSERT_EQ(r.exit_code, 0);
+    for (const char* text :
+         {"--integrator NAME", "whitted (default)", "--max-depth N", "--min-contribution X",
+          "--shadows opaque|filtered", "ambient_occlusion", "--ao-samples N", "--ao-direct",
+          "--spp N", "samples per pixel", "1..65536", "--aa stratified|adaptive",
+          "--texture-cache X"}) {
+        EXPECT_NE(r.output.find(text), std::string::npos) << text;
+    }
+    EXPECT_EQ(r.output.find('@'), std::string::npos) << "an unfilled help slot";
+}
+
+}  // namespace
