@@ -124,6 +124,11 @@ inline void check_scene(const SceneDescription& d) {
         } else if (const auto* dl = std::get_if<DirectionalLight>(&l)) {
             expect(finite(dl->direction) && finite(dl->color) && finite(dl->intensity),
                    "directional light");
+        } else if (const auto* sp = std::get_if<SpotLight>(&l)) {
+            expect(finite(sp->position) && finite(sp->direction) && finite(sp->color) &&
+                       finite(sp->intensity) && sp->cos_outer >= -1e-6f &&
+                       sp->cos_outer < sp->cos_inner && sp->cos_inner <= 1.0f,
+                   "spot light");
         } else if (const auto* a = std::get_if<AreaLight>(&l)) {
             expect(finite(a->color) && finite(a->intensity) && a->samples >= 1 &&
                        a->samples <= 4096 && finite(a->radiance()) && a->area() > 0.0f &&

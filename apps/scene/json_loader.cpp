@@ -1262,7 +1262,7 @@ Attenuation SceneParser::parse_attenuation(const Json& value, const std::string&
         check_keys(value, pointer, {"type", "d0"});
         a.kind = Attenuation::Kind::Linear;
         a.d0 = real_or(value, pointer, "d0", 0.0f, Bound::NonNegative);
-    } else {  // seed 003 eq. 2.2: f(d) = min(1, 1/(a0 + a1·d + a2·d²))
+    } else {  // seed 003 eq. 2.8: f(d) = min(1, 1/(a0 + a1·d + a2·d²))
         check_keys(value, pointer, {"type", "a0", "a1", "a2"});
         a.kind = Attenuation::Kind::Quadratic;
         a.a0 = real_or(value, pointer, "a0", 1.0f, Bound::NonNegative);
@@ -1278,9 +1278,41 @@ Attenuation SceneParser::parse_attenuation(const Json& value, const std::string&
 Light SceneParser::parse_light(const Json& value, const std::string& pointer) const {
     require_object(value, pointer, "a light object");
     const std::string type =
-        choice(require(value, pointer, "type", "\"point\", \"directional\" or \"area\""),
-               child(pointer, "type"), {"point", "directional", "area"});
+        choice(require(value, pointer, "type", "\"point\", \"spot\", \"directional\" or \"area\""),
+               child(pointer, "type"), {"point", "spot", "directional", "area"});
     if (type == "area") return parse_area_light(value, pointer);
+    if (type == "spot") {
+        // glTF's KHR_lights_punctual spot (shading/spot_light.h), its cone angles in degrees:
+        // 0 <= inner_cone_angle < outer_cone_angle <= 90, glTF's defaults 0 and 45.
+        check_keys(value, pointer,
+                   {"type", "position", "direction", "color", "intensity", "attenuation",
+                    "inner_cone_angle", "outer_cone_angle"});
+        SpotLight light;
+        light.position =
+            vec3(require(value, pointer, "position", "[x, y, z]"), child(pointer, "position"));
+        light.direction = direction(require(value, pointer, "direction", "[x, y, z], non-zero"),
+                                    child(pointer, "direction"));
+        light.color = colour_or(value, pointer, "color", Vec3(1.0f));
+        light.intensity = real_or(value, pointer, "intensity", 1.0f, Bound::NonNegative);
+        if (const Json* v = find(value, "attenuation")) {
+            light.attenuation = parse_attenuation(*v, child(pointer, "attenuation"));
+        }
+        const float inner = real_or(value, pointer, "inner_cone_angle", 0.0f, Bound::NonNegative);
+        const float outer = real_or(value, pointer, "outer_cone_angle", 45.0f, Bound::Positive);
+        if (!(outer <= 90.0f)) {
+            fail(child(pointer, "outer_cone_angle"),
+                 "expected an angle in degrees in (0, 90], got " +
+                     describe(value["outer_cone_angle"]));
+        }
+        if (!(inner < outer)) {
+            fail(child(pointer, "inner_cone_angle"),
+                 "expected an angle in degrees below outer_cone_angle (" + describe(Json(outer)) +
+                     "), got " + describe(value["inner_cone_angle"]));
+        }
+        light.cos_inner = std::cos(glm::radians(inner));
+        light.cos_outer = std::cos(glm::radians(outer));
+        return light;
+    }
     if (type == "point") {
         check_keys(value, pointer, {"type", "position", "color", "intensity", "attenuation"});
         PointLight light;

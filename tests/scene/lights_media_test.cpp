@@ -5,6 +5,7 @@
 // rays; and the determinism promise with every feature on.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -282,6 +283,32 @@ TEST(LightsMediaDeterminism, SameBitsForAnyThreadCountTileSizeAndStreaming) {
         }
     }
     EXPECT_GT(reference.counters.shadow_filtered, 0u);
+}
+
+}  // namespace
+}  // namespace rayo
+
+namespace rayo {
+namespace {
+
+TEST(SpotLight, AJsonSpotLightsAPlaneWithTheGltfConeFalloff) {
+    // A spot 1 above a white Lambertian plane, pointing down, cone 10° to 30°: the point at
+    // angle θ from the axis gets kd·Il·f(θ)·cos θ with KHR_lights_punctual's
+    // f = clamp((cos θ − cos 30°)/(cos 10° − cos 30°), 0, 1)².
+    Tracer t(R"({"rayo": 1, "materials": {"default": {"ka": 0, "kd": 1, "ks": 0}},
+      "lights": [{"type": "spot", "position": [0, 0, 1], "direction": [0, 0, -1],
+                  "inner_cone_angle": 10, "outer_cone_angle": 30}],
+      "objects": [{"type": "disk", "center": [0, 0, 0], "normal": [0, 0, 1], "radius": 10}]})");
+    const double inner = std::cos(10.0 * kPi / 180.0), outer = std::cos(30.0 * kPi / 180.0);
+    for (const double degrees : {0.0, 5.0, 12.0, 20.0, 28.0, 31.0, 60.0}) {
+        const double theta = degrees * kPi / 180.0;
+        const double x = std::tan(theta);
+        const double f =
+            std::pow(std::clamp((std::cos(theta) - outer) / (inner - outer), 0.0, 1.0), 2.0);
+        const double expected = f * std::cos(theta);
+        const Vec3 r = t.radiance(Vec3(static_cast<float>(x), 0, 5), Vec3(0, 0, -1));
+        EXPECT_NEAR(r.x, expected, 2e-5) << degrees << "°";
+    }
 }
 
 }  // namespace
