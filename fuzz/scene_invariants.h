@@ -22,6 +22,20 @@ inline void expect(bool ok, const std::string& what) {
     if (!ok) violated(what);
 }
 
+// Whether declared settings (core/setting.h) lie within their declarations' bounds.
+struct DeclaredBounds {
+    std::string broken;
+    void integer(const SettingInfo& info, int v, long long min, long long max) {
+        if (v < min || v > max) broken = info.name;
+    }
+    void real(const SettingInfo& info, float v, double min, double max) {
+        if (!std::isfinite(v) || v < min || v > max) broken = info.name;
+    }
+    void toggle(const SettingInfo&, bool) {}
+    template <typename E>
+    void choice(const SettingInfo&, const E&, std::initializer_list<Choice<E>>) {}
+};
+
 inline bool finite(float v) {
     return std::isfinite(v);
 }
@@ -140,10 +154,14 @@ inline void check_scene(const SceneDescription& d) {
     expect(finite(d.shading.fog.color) && std::isfinite(d.shading.fog.density) &&
                d.shading.fog.density >= 0.0f,
            "fog");
-    expect(d.settings.spp >= 1 && d.settings.tile_size >= 1, "spp/tile size");
-    expect(d.settings.whitted().max_depth >= 0 && d.settings.whitted().max_depth <= 64,
-           "max depth");
-    expect(finite(d.settings.whitted().min_contribution), "min contribution");
+    // Every declared setting of the render and of its integrator within its declaration's
+    // bounds (core/setting.h): the oracle follows the declarations, as the reader does.
+    RenderSettings settings = d.settings;
+    DeclaredBounds bounds;
+    settings.fields(bounds);
+    std::visit([&](auto& integrator) { integrator.fields(bounds); }, settings.integrator);
+    expect(bounds.broken.empty() && !settings.problem(),
+           "render setting out of its declared bounds: " + bounds.broken);
     // The camera may still be refused here (the CLI reports that as an InputError), but it
     // must not crash, and one it accepts must respect the resolution limits.
     try {

@@ -1,5 +1,5 @@
 #pragma once
-// Phong materials (seed 000 eqs. [22]-[24], seed 003 eq. 2.1): per-channel ambient, diffuse and
+// Phong materials (seed 000 eqs. [22]-[24], seed 003 eq. 2.9): per-channel ambient, diffuse and
 // specular coefficients, the specular exponent, and the Whitted transport weights.
 #include <cstdint>
 #include <string>
@@ -47,6 +47,14 @@ struct SurfaceCoefficients {
     Vec3 translucency{0.0f};  // perfect diffuse transmission, seed 001: lights behind the surface
     Vec3 absorption{0.0f};    // Beer–Lambert σ per unit length inside the object (seed 004)
     Vec3 emission{0.0f};      // radiance the surface's front side sends to every ray that sees it
+    // The glTF metallic-roughness parameters the Phong coefficients above were mapped from
+    // (shading/metallic_roughness.h), kept for the integrators that sample the physically based
+    // model itself (shading/scattering/material_bsdf.h); Whitted shades the mapping.
+    struct MetallicRoughness {
+        bool used = false;
+        Vec3 base_color{1.0f};
+        float metallic = 0.0f, roughness = 1.0f;
+    } metallic_roughness;
 
     bool transmissive() const {
         return transmit.x > 0.0f || transmit.y > 0.0f || transmit.z > 0.0f;

@@ -20,6 +20,10 @@ void apply_metallic_roughness(SurfaceCoefficients& c, const Vec3& base, float me
     const double r4 = roughness * roughness * roughness * roughness;
     const double exponent = r4 > 0.0 ? 2.0 / r4 - 2.0 : 10000.0;
     c.shininess = static_cast<float>(std::clamp(exponent, 1.0, 10000.0));
+    c.metallic_roughness.used = true;
+    c.metallic_roughness.base_color = base;
+    c.metallic_roughness.metallic = metallic;
+    c.metallic_roughness.roughness = static_cast<float>(roughness);
 }
 
 }  // namespace rayo

@@ -937,6 +937,9 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         out << "rayo: " << output << " " << cam.width << "x" << cam.height << " "
             << (d.settings.aa == AntiAliasing::Adaptive ? "adaptive"
                                                         : std::to_string(d.settings.spp) + "spp")
+            << (d.settings.integrator.index() == 0
+                    ? std::string()
+                    : std::string(" ") + integrator_name(d.settings.integrator))
             << " " << result.threads << " threads"
             << (result.processes.size() > 1
                     ? " x " + std::to_string(result.processes.size()) + " ranks"

@@ -241,7 +241,7 @@ std::string setting_help(const std::string& flag) {
 std::string integrators_help() {
     std::string out =
         "integrators (--integrator NAME, or in the scene \"render\": {\"integrator\":\n"
-        "  {\"type\": NAME, ...}}; each one's flags below, docs/scene-format.md):\n";
+        "  {\"type\": NAME, ...}}; each one's flags below, docs/integrators.md):\n";
     for_each_integrator([&](auto s) {
         using S = decltype(s);
         out += help_lines(

@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "core/sampling.h"
-#include "shading/integrators/whitted.h"
+#include "shading/surface_interaction.h"
 #include "shading/light.h"
 #include "shading/normal_mapping.h"
 
@@ -27,13 +27,13 @@ Vec3 AmbientOcclusionIntegrator::radiance(const Ray& ray, const PixelSample& sam
     ++counters.camera;
     SurfaceHit hit;
     if (!m_accel.intersect(ray, hit)) return m_scene.background;
-    const Material& material = m_scene.materials[hit.material];
-    const bool entering = glm::dot(ray.direction, hit.geometric_normal) < 0.0f;
-    const Vec3 facing_geometric = entering ? hit.geometric_normal : -hit.geometric_normal;
-    const Vec3 normal =
-        face_viewer(entering ? hit.shading_normal : -hit.shading_normal, -ray.direction);
-    const Vec3 kd = material.kd * hit.vertex_color;
-    const Vec3 origin = offset_ray_origin(hit, facing_geometric);
+    SurfaceInteraction surface;
+    m_surfaces.interact(ray, hit, surface);
+    const SurfaceCoefficients& material = surface.material();
+    const Vec3 facing_geometric = surface.facing_geometric;
+    const Vec3 normal = face_viewer(surface.normal, surface.to_eye);
+    const Vec3 kd = material.kd;  // textured, times the vertex colour
+    const Vec3 origin = surface.shadow_origin;
     Vec3 t, b;
     orthonormal_basis(normal, t, b);
     const float reach =
@@ -58,7 +58,7 @@ Vec3 AmbientOcclusionIntegrator::radiance(const Ray& ray, const PixelSample& sam
     }
     Vec3 color = kd * (static_cast<float>(escaped) / static_cast<float>(count));
     if (m_settings.direct) color += direct_light(hit, normal, origin, kd, sample, counters);
-    if (material.emissive() && entering) color += material.emission;
+    if (material.emissive() && surface.entering) color += material.emission;
     return color;
 }
 

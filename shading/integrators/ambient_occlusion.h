@@ -1,9 +1,10 @@
 #pragma once
 // The ambient-occlusion integrator (Tachyon's and VMD's "skylight"): at a camera ray's hit, the
 // fraction of a cosine-weighted hemisphere of `samples` rays that escapes within `distance`,
-// times the material's diffuse colour, plus, if asked, the direct light of the scene's lights
-// (docs/references.md, "ambient occlusion"). Rays that miss see the background. Registered in
-// shading/integrators/integrator.h; its settings are its fields().
+// times the material's diffuse colour at the hit (textures and vertex colours included), plus, if
+// asked, the direct light of the scene's lights (docs/references.md, ambient-occlusion). Rays
+// that miss see the background. Registered in shading/integrators/integrator.h; its settings are
+// its fields().
 #include <optional>
 
 #include "core/accel.h"
@@ -12,6 +13,7 @@
 #include "core/shapes/shape_fields.h"
 #include "core/stats.h"
 #include "shading/integrators/integrator_context.h"
+#include "shading/surface_interaction.h"
 
 namespace rayo {
 
@@ -45,7 +47,11 @@ struct AmbientOcclusionSettings {
 class AmbientOcclusionIntegrator {
   public:
     AmbientOcclusionIntegrator(const IntegratorContext& context, const AmbientOcclusionSettings& s)
-        : m_accel(context.accel), m_scene(context.scene), m_images(context.images), m_settings(s) {}
+        : m_accel(context.accel),
+          m_scene(context.scene),
+          m_images(context.images),
+          m_surfaces(context.accel, context.scene, context.images, context.pixel_spread),
+          m_settings(s) {}
 
     // The tile loop's entries (core/render.h): the hemisphere's rays are stratified over the
     // camera sample's own dimensions of the sampler, so the image is the same for any thread
@@ -65,6 +71,7 @@ class AmbientOcclusionIntegrator {
     const Accel& m_accel;
     const ShadingScene& m_scene;
     const ImageTextures* m_images;
+    SurfaceShading m_surfaces;
     AmbientOcclusionSettings m_settings;
 };
 

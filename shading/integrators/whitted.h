@@ -14,6 +14,7 @@
 #include "shading/integrators/integrator_context.h"
 #include "shading/radiosity_field.h"
 #include "shading/shading_scene.h"
+#include "shading/surface_interaction.h"
 
 namespace rayo {
 
@@ -103,7 +104,12 @@ class WhittedIntegrator {
     WhittedIntegrator(const Accel& accel, const ShadingScene& scene, const WhittedSettings& s,
                       const RadiosityField* radiosity = nullptr,
                       const ImageTextures* images = nullptr)
-        : m_accel(accel), m_scene(scene), m_settings(s), m_radiosity(radiosity), m_images(images) {}
+        : m_accel(accel),
+          m_scene(scene),
+          m_settings(s),
+          m_radiosity(radiosity),
+          m_images(images),
+          m_surfaces(accel, scene, images, s.pixel_spread) {}
     // The registry's constructor (shading/integrators/integrator.h).
     WhittedIntegrator(const IntegratorContext& context, WhittedSettings s)
         : WhittedIntegrator(context.accel, context.scene, with_spread(s, context.pixel_spread),
@@ -135,39 +141,18 @@ class WhittedIntegrator {
         s.pixel_spread = spread;
         return s;
     }
-    // What shading a hit needs, computed once: the side the ray arrived on, normals after
-    // bump mapping, the (textured) material, the spawned-ray origin.
-    struct ShadingPoint {
-        const SurfaceCoefficients* base = nullptr;    // the scene's material
-        std::optional<SurfaceCoefficients> textured;  // its coefficients at the hit, if textured
-        bool entering = true;
-        Vec3 facing_geometric{0.0f}, normal{0.0f}, to_eye{0.0f}, shadow_origin{0.0f};
+    // What Whitted's shading of a hit needs: the surface interaction (shading/
+    // surface_interaction.h), the medium the ray came through and the radiosity solution there.
+    struct ShadingPoint : SurfaceInteraction {
         // The medium the arriving ray travelled through: the absorbing material whose inside it
         // crossed, or null for the space between objects (the fog's).
         const SurfaceCoefficients* medium = nullptr;
         // The radiance the radiosity solution reflects here, when the hit has one.
         bool radiosity = false;
         Vec3 radiosity_reflected{0.0f};
-        // Not a stored pointer to `textured`: points are copied and must stay valid.
-        const SurfaceCoefficients& material() const { return textured ? *textured : *base; }
     };
     ShadingPoint prepare(const Ray& ray, const SurfaceHit& hit,
                          const SurfaceCoefficients* medium) const;
-    // The image footprint's width in texture units at a parameterized hit (Accel::parameterize).
-    float texture_width(const SurfaceHit& surface) const;
-    // The material's image textures at a parameterized hit, footprint `width`, replacing the
-    // coefficients they drive.
-    SurfaceCoefficients with_images(const SurfaceHit& surface, float width,
-                                    const MaterialImages& images,
-                                    SurfaceCoefficients coefficients) const;
-    // The glTF metallic-roughness and occlusion images of material `material` at `uv`
-    // (`base_texel`: the base colour image's texel there, 1 without one).
-    void with_pbr_images(uint32_t material, const PbrImages& pbr, const Vec3& base_texel,
-                         const glm::vec2& uv, float width, SurfaceCoefficients& c) const;
-    // The shading normal (`normal`, on the arriving side) after the material's normal and bump
-    // maps (shading/normal_mapping.h), facing the viewer.
-    Vec3 mapped_normal(const SurfaceHit& surface, float width, const MaterialImages& images,
-                       bool entering, const Vec3& normal, const Vec3& to_eye) const;
     // Which side of the surface a light sample lies on: the side the ray arrived on (the local
     // model), the far side of a translucent surface (diffuse transmission), or neither.
     enum class LightSide { None, Front, Back };
@@ -241,12 +226,8 @@ class WhittedIntegrator {
     WhittedSettings m_settings;
     const RadiosityField* m_radiosity;
     const ImageTextures* m_images;
+    SurfaceShading m_surfaces;
     StreamLog* m_log = nullptr;
 };
-
-// Origin of a ray leaving `hit` on the side `side_normal` points to: offset along the
-// geometric normal by an amount that scales with the hit position's magnitude and the object's
-// size (docs/architecture.md "Numerics": a fixed epsilon fails once coordinates reach ~1e3).
-Vec3 offset_ray_origin(const SurfaceHit& hit, const Vec3& side_normal);
 
 }  // namespace rayo

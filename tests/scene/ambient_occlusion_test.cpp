@@ -13,9 +13,11 @@
 #include <string>
 
 #include "apps/scene/json_loader.h"
+#include "apps/scene/renderer.h"
 #include "core/accel.h"
 #include "core/error.h"
 #include "shading/integrators/integrator.h"
+#include "tests/test_helpers.h"
 
 namespace rayo {
 namespace {
@@ -99,6 +101,32 @@ TEST(AmbientOcclusion, TimesTheDiffuseColourPlusTheLightsWhenAsked) {
     };
     EXPECT_NEAR(with("false"), 0.5, 1e-6);
     EXPECT_NEAR(with("true"), 1.0, 1e-5);
+}
+
+TEST(AmbientOcclusion, SameBitsForAnyThreadCountTileSizeAndBatching) {
+    // The hemisphere's rays come from the sampler (pixel, sample index, dimension), so the
+    // image cannot depend on which thread, tile or batch traced a pixel.
+    SceneDescription d = load(R"({"rayo": 1,
+      "camera": {"eye": [0, 3, 8], "look_at": [0, 0.5, 0], "width": 80, "height": 60},
+      "lights": [{"type": "area", "shape": "disk", "center": [0, 4, 0], "normal": [0, -1, 0],
+                  "radius": 1, "samples": 4}],
+      "render": {"spp": 2, "tile_size": 16, "integrator": {"type": "ambient_occlusion",
+                 "samples": 8, "distance": 3, "direct": true}},
+      "objects": [{"type": "disk", "center": [0, 0, 0], "normal": [0, 1, 0], "radius": 20},
+                  {"type": "sphere", "center": [-1, 1, 0], "radius": 1},
+                  {"type": "box", "min": [0.5, 0, -1], "max": [2, 1.5, 0.5]}]})");
+    const RenderResult reference = render_scene(d, 1, false);
+    for (int threads : {2, 3}) {
+        for (int tile : {16, 48}) {
+            for (bool coherent : {true, false}) {
+                d.settings.tile_size = tile;
+                d.settings.coherent = coherent;
+                const RenderResult r = render_scene(d, threads, false);
+                EXPECT_TRUE(rayo_test::same_bits(reference.film, r.film))
+                    << "threads " << threads << " tile " << tile << " coherent " << coherent;
+            }
+        }
+    }
 }
 
 TEST(IntegratorSettings, JsonNamesTheIntegratorAndItsFields) {
