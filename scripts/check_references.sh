@@ -52,6 +52,7 @@ fnv-1a ~ FNV-1a ~
 fresnel-1823 ~ Fresnel 1823|Fresnel equations|Fresnel reflectance ~ Fresnel 1823
 frisvad-2012 ~ Frisvad ~ Frisvad 2012
 gltf-2.0 ~ glTF 2\.0 ~
+gltf-pr-2392 ~ glTF#2392|glTF pull request #2392 ~
 haines-1987 ~ Haines 1987|Standard Procedural Databases ~ Haines 1987
 haines-1994 ~ Point in Polygon Strategies|Haines's crossing ~ Haines 1994
 haines-nff ~ Neutral File Format|NFF specification ~
@@ -97,6 +98,7 @@ walter-2007 ~ Walter et al|GGX ~ Walter 2007
 wavefront-obj-mtl ~ Wavefront OBJ ~
 wellons-2018 ~ Wellons|lowbias32 ~ Wellons 2018
 whitted-1980 ~ Whitted ~ Whitted 1980
+wilson-hilferty-1931 ~ Wilson.{1,6}Hilferty|WilsonHilferty ~ Wilson 1931, Hilferty 1931
 woop-2013 ~ Woop ~ Woop 2013, Benthin 2013, Wald 2013
 worley-1996 ~ Worley ~ Worley 1996
 wyvill-1986 ~ Wyvill ~ Wyvill 1986

@@ -1,5 +1,5 @@
 #pragma once
-// The Phong local illumination model (seed 000 eqs. [15]-[28], seed 003 eq. 2.1): the diffuse
+// The Phong local illumination model (seed 000 eqs. [15]-[28], seed 003 eq. 2.9): the diffuse
 // and specular terms of one light at one surface point. The ambient term Ka·Ia and the sum over
 // lights with shadows and attenuation are in the Whitted integrator.
 #include <cmath>
@@ -15,8 +15,8 @@ inline Vec3 lambert_term(const SurfaceCoefficients& m, const Vec3& normal, const
     return n_dot_l > 0.0f ? m.kd * n_dot_l : Vec3(0.0f);
 }
 
-// Specular: Ks·(V·R)^n with R = 2(N·L)N − L (seed 000 eqs. [23]-[24]) or Ks·(N·H)^n with
-// H = (L+V)/|L+V| (eq. [28]). No highlight when the light is below the surface.
+// Specular: Ks·(V·R)^n with R = 2(N·L)N − L (seed 000 eqs. [23]-[25]) or Ks·(N·H)^n (eq. [28])
+// with H = (L+V)/|L+V| (eq. [26]). No highlight when the light is below the surface.
 inline Vec3 specular_term(const SurfaceCoefficients& m, const Vec3& normal, const Vec3& to_light,
                           const Vec3& to_eye) {
     const float n_dot_l = glm::dot(normal, to_light);

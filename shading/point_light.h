@@ -1,6 +1,6 @@
 #pragma once
 // A point light with colour, intensity and distance attenuation (seed 000: f(d) = 1/(d + d0) or
-// 1/(a0 + a1·d + a2·d²); seed 003 eq. 2.2 clamps to 1; the inverse square of glTF's
+// 1/(a0 + a1·d + a2·d²); seed 003 eq. 2.8 clamps to 1; the inverse square of glTF's
 // KHR_lights_punctual, optionally windowed to a range).
 #include <algorithm>
 

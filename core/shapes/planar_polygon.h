@@ -26,9 +26,10 @@ class PlanarPolygon {
     static std::optional<PlanarPolygon> make(const std::vector<Vec3>& vertices, FillRule rule);
 
     // Whether the point (a, b), in the projection that drops the normal's largest component,
-    // lies inside: Haines's crossing test for EvenOdd, Sunday's signed crossings for the winding
-    // number ("Point in Polygon Strategies", Graphics Gems IV, 1994). Points on an edge fall on
-    // one side by the half-open rule (a vertex on the test ray counts as above it).
+    // lies inside: Haines's crossing test for EvenOdd ("Point in Polygon Strategies", Graphics
+    // Gems IV, 1994), Sunday's signed crossings for the winding number (his own "Inclusion of a
+    // Point in a Polygon", 2001). Points on an edge fall on one side by the half-open rule (a
+    // vertex on the test ray counts as above it).
     bool contains(float a, float b) const;
     // The projected coordinates `contains` takes of a point of the plane.
     void project(const Vec3& p, float& a, float& b) const;

@@ -87,8 +87,8 @@ bool intersect_sphere_seed(const glm::vec<3, T>& origin, const glm::vec<3, T>& d
                            bool& far_root) {
     const glm::vec<3, T> f = origin - center;
     const T b = T(2) * glm::dot(direction, f);     // seed 000 eq. [6]
-    const T c = glm::dot(f, f) - radius * radius;  // seed 000 eq. [7]
-    const T discriminant = b * b - T(4) * c;       // seed 000 eq. [8]
+    const T c = glm::dot(f, f) - radius * radius;  // seed 000 eq. [6]
+    const T discriminant = b * b - T(4) * c;       // seed 000 eq. [7]
     if (!(discriminant > T(0))) return false;      // D <= 0: miss (tangent counts as miss)
     const T root = std::sqrt(discriminant);
     return nearest_root_in_window((-b - root) / T(2), (-b + root) / T(2), tnear, tfar, t_out,

@@ -19,7 +19,7 @@ namespace rayo {
 //   f          = mix(dielectric, metal, metallic)
 // α = roughness² (the spec), clamped to kMinGgxAlpha = 1e-3 so that roughness 0 stays finite
 // and samplable (a true mirror is the Mirror lobe). Deviation from the spec's text: G2 is the
-// height-correlated Smith form (Heitz 2014, DESIGN.md "Microfacets"). Like the spec's model it
+// height-correlated Smith form (Heitz 2014, docs/references.md). Like the spec's model it
 // is single-scattering and does not conserve energy at grazing angles: the diffuse weight
 // 1 − F(wo·h) is taken at the half vector of each wi (wo·h ≈ 0.7 for most of them) while the
 // specular takes F(cos θo) ≈ 1, so the dielectric reflects more than it receives there: 1.71 at

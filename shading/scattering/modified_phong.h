@@ -52,7 +52,7 @@ class ModifiedPhong {
     float exponent() const { return m_exponent; }
 
   private:
-    // seed 000 eq. [23]: R = 2(N·L)N − L, here about the local z: (−x, −y, z).
+    // seed 000 eq. [25]: R = 2(N·L)N − L, here about the local z: (−x, −y, z).
     static Vec3 mirror(const Vec3& w) { return Vec3(-w.x, -w.y, w.z); }
     // cos α = wi·R(wo) when wi is on wo's side, else 0 (symmetric in wo and wi: reciprocal).
     static float cos_alpha(const Vec3& wo, const Vec3& wi) {

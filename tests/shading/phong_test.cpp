@@ -1,5 +1,5 @@
 // Tests of the Phong local model (shading/phong.h, seed 000 eqs. [18]-[28]) and of the light
-// attenuation factors (shading/light.h, seed 000 and seed 003 eq. 2.2), against hand-computed
+// attenuation factors (shading/light.h, seed 000 and seed 003 eq. 2.8), against hand-computed
 // values.
 #include "shading/phong.h"
 
@@ -143,7 +143,7 @@ TEST(Phong, AttenuationFactors) {
     linear.d0 = 0.5f;
     EXPECT_FLOAT_EQ(linear.factor(0.25f), 1.0f / 0.75f);
 
-    // seed 003 eq. 2.2: f(d) = min(1, 1/(a0 + a1·d + a2·d²)).
+    // seed 003 eq. 2.8: f(d) = min(1, 1/(a0 + a1·d + a2·d²)).
     Attenuation quadratic;
     quadratic.kind = Attenuation::Kind::Quadratic;
     quadratic.a0 = 1.0f;
