@@ -22,6 +22,24 @@ inline void expect(bool ok, const std::string& what) {
     if (!ok) violated(what);
 }
 
+// Whether every number of a registered type's fields (core/shapes/shape_fields.h) is finite.
+struct FiniteFields {
+    bool ok = true;
+    void operator()(const char*, const Vec3& v, FieldKind) { ok = ok && finite_vec(v); }
+    void operator()(const char*, const float& v, FieldKind) { ok = ok && std::isfinite(v); }
+    void operator()(const char*, const Attenuation& a, FieldKind) {
+        ok = ok && std::isfinite(a.d0) && std::isfinite(a.a0) && std::isfinite(a.a1) &&
+             std::isfinite(a.a2) && std::isfinite(a.range);
+    }
+    template <typename T>
+    void optional(const char* name, const T& member, FieldKind kind) {
+        (*this)(name, member, kind);
+    }
+    static bool finite_vec(const Vec3& v) {
+        return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    }
+};
+
 // Whether declared settings (core/setting.h) lie within their declarations' bounds.
 struct DeclaredBounds {
     std::string broken;
@@ -133,22 +151,24 @@ inline void check_scene(const SceneDescription& d) {
                    "' has a non-finite or negative translucency/absorption/emission");
     }
     for (const Light& l : d.shading.lights) {
-        if (const auto* p = std::get_if<PointLight>(&l)) {
-            expect(finite(p->position) && finite(p->color) && finite(p->intensity), "point light");
-        } else if (const auto* dl = std::get_if<DirectionalLight>(&l)) {
-            expect(finite(dl->direction) && finite(dl->color) && finite(dl->intensity),
-                   "directional light");
-        } else if (const auto* sp = std::get_if<SpotLight>(&l)) {
-            expect(finite(sp->position) && finite(sp->direction) && finite(sp->color) &&
-                       finite(sp->intensity) && sp->cos_outer >= -1e-6f &&
-                       sp->cos_outer < sp->cos_inner && sp->cos_inner <= 1.0f,
-                   "spot light");
-        } else if (const auto* a = std::get_if<AreaLight>(&l)) {
-            expect(finite(a->color) && finite(a->intensity) && a->samples >= 1 &&
-                       a->samples <= 4096 && finite(a->radiance()) && a->area() > 0.0f &&
-                       std::isfinite(a->area()),
-                   "area light");
-        }
+        std::visit(
+            [&](const auto& light) {
+                using L = std::decay_t<decltype(light)>;
+                if constexpr (std::is_same_v<L, AreaLight>) {
+                    expect(finite(light.color) && finite(light.intensity) && light.samples >= 1 &&
+                               light.samples <= 4096 && finite(light.radiance()) &&
+                               light.area() > 0.0f && std::isfinite(light.area()),
+                           "area light");
+                } else {
+                    // Every field the light declares (shading/light.h) is finite and its
+                    // constraints hold: the oracle follows the registration.
+                    L copy = light;
+                    FiniteFields check;
+                    copy.fields(check);
+                    expect(check.ok && !copy.problem(), std::string(L::kName) + " light");
+                }
+            },
+            l);
     }
     expect(finite(d.shading.ambient_light) && finite(d.shading.background), "ambient/background");
     expect(finite(d.shading.fog.color) && std::isfinite(d.shading.fog.density) &&

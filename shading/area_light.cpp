@@ -144,3 +144,98 @@ bool AreaLight::sample(const Vec3& point, const glm::vec2& u, LightSample& out) 
 }
 
 }  // namespace rayo
+
+namespace rayo {
+namespace {
+
+// The density d²/(A·cos θl) of a flat emitter's point `hit` (on its front) seen along
+// `direction` from `point`, or 0 from behind (flat_sample's pdf).
+float flat_pdf(const Vec3& point, const Vec3& hit, const Vec3& normal, float area,
+               const Vec3& direction) {
+    const float cos_light = -glm::dot(normal, direction);
+    if (!(cos_light > 0.0f) || !(area > 0.0f)) return 0.0f;
+    const Vec3 offset = hit - point;
+    return glm::dot(offset, offset) / (area * cos_light);
+}
+
+// Where the ray point + t·direction (t > 0) meets the plane through `origin` with normal `n`.
+bool plane_crossing(const Vec3& point, const Vec3& direction, const Vec3& origin, const Vec3& n,
+                    Vec3& hit) {
+    const float denominator = glm::dot(direction, n);
+    if (denominator == 0.0f) return false;
+    const float t = glm::dot(origin - point, n) / denominator;
+    if (!(t > 0.0f)) return false;
+    hit = point + t * direction;
+    return true;
+}
+
+}  // namespace
+
+float MeshEmitter::pdf(const Vec3& point, const Vec3& direction) const {
+    if (m_triangles.empty()) return 0.0f;
+    const float total = m_cdf.back();
+    float density = 0.0f;
+    for (size_t i = 0; i < m_triangles.size(); ++i) {
+        const Triangle& t = m_triangles[i];
+        // Möller–Trumbore: the line's crossing of the triangle, if any, in front of the point.
+        const Vec3 p = glm::cross(direction, t.e2);
+        const float det = glm::dot(t.e1, p);
+        if (det == 0.0f) continue;
+        const Vec3 s = point - t.p0;
+        const float b1 = glm::dot(s, p) / det;
+        const Vec3 q = glm::cross(s, t.e1);
+        const float b2 = glm::dot(direction, q) / det;
+        const float distance = glm::dot(t.e2, q) / det;
+        if (b1 < 0.0f || b2 < 0.0f || b1 + b2 > 1.0f || !(distance > 0.0f)) continue;
+        const Vec3 cross = glm::cross(t.e1, t.e2);
+        const float cross_length = glm::length(cross);
+        const float weight = m_cdf[i] - (i == 0 ? 0.0f : m_cdf[i - 1]);
+        const float effective_area = 0.5f * cross_length * total / weight;
+        density += flat_pdf(point, point + distance * direction, cross / cross_length,
+                            effective_area, direction);
+    }
+    return density;
+}
+
+float AreaLight::pdf(const Vec3& point, const Vec3& direction) const {
+    switch (shape) {
+        case Shape::Mesh:
+            return mesh ? mesh->pdf(point, direction) : 0.0f;
+        case Shape::Rectangle: {
+            const Vec3 n = glm::normalize(glm::cross(edge1, edge2));
+            Vec3 hit;
+            if (!plane_crossing(point, direction, corner, n, hit)) return 0.0f;
+            // The point's coordinates (a, b) in the edges' basis (the edges need not be
+            // perpendicular): the 2×2 normal equations.
+            const Vec3 local = hit - corner;
+            const float e11 = glm::dot(edge1, edge1), e22 = glm::dot(edge2, edge2),
+                        e12 = glm::dot(edge1, edge2);
+            const float d1 = glm::dot(local, edge1), d2 = glm::dot(local, edge2);
+            const float det = e11 * e22 - e12 * e12;
+            const float a = (d1 * e22 - d2 * e12) / det;
+            const float b = (d2 * e11 - d1 * e12) / det;
+            if (a < 0.0f || a > 1.0f || b < 0.0f || b > 1.0f) return 0.0f;
+            return flat_pdf(point, hit, n, area(), direction);
+        }
+        case Shape::Disk: {
+            Vec3 hit;
+            if (!plane_crossing(point, direction, center, normal, hit)) return 0.0f;
+            const Vec3 r = hit - center;
+            if (glm::dot(r, r) > radius * radius) return 0.0f;
+            return flat_pdf(point, hit, normal, area(), direction);
+        }
+        case Shape::Sphere:
+            break;
+    }
+    // Sphere: uniform over the cone of directions it subtends (sample).
+    const Vec3 to_center = center - point;
+    const float dc = glm::length(to_center);
+    if (!(dc > radius)) return 0.0f;
+    const float sin2_max = (radius / dc) * (radius / dc);
+    const float one_minus_cos_max = sin2_max / (1.0f + std::sqrt(1.0f - sin2_max));
+    const float cos_theta = glm::dot(direction, to_center) / dc;
+    if (cos_theta < 1.0f - one_minus_cos_max) return 0.0f;
+    return 1.0f / (2.0f * kPi * one_minus_cos_max);
+}
+
+}  // namespace rayo

@@ -42,6 +42,8 @@ class MeshEmitter {
     // As AreaLight::sample: uniform u ∈ [0,1)² picks the triangle (u.x, by the power CDF,
     // then rescaled to [0,1) inside the triangle's interval) and the point on it.
     bool sample(const Vec3& point, const glm::vec2& u, LightSample& out) const;
+    // The solid-angle density of `direction` under sample (AreaLight::pdf).
+    float pdf(const Vec3& point, const Vec3& direction) const;
 
   private:
     std::vector<Triangle> m_triangles;
@@ -50,6 +52,7 @@ class MeshEmitter {
 };
 
 struct AreaLight {
+    static constexpr const char* kName = "area";
     enum class Shape { Rectangle, Disk, Sphere, Mesh };
     Shape shape = Shape::Disk;
     Vec3 color{1.0f};
@@ -74,6 +77,11 @@ struct AreaLight {
     // the samples is the irradiance the light gives. False when the point sees the light's back
     // (rectangle, disk) or lies inside it (sphere).
     bool sample(const Vec3& point, const glm::vec2& u, LightSample& out) const;
+    // The solid-angle density with which sample(point, u) for uniform u gives `direction`
+    // (unit), for multiple importance sampling: 0 where it never does (the light missed or seen
+    // from behind). Meshes: the sum over the emissive triangles the line crosses.
+    static constexpr bool kDelta = false;
+    float pdf(const Vec3& point, const Vec3& direction) const;
 };
 
 }  // namespace rayo

@@ -7,6 +7,7 @@
 // sample_light, light_sample_count and light_sample_u (docs/architecture.md, "Extension points").
 #include <cstdint>
 #include <cstring>
+#include <utility>
 #include <variant>
 
 #include "core/sampling.h"
@@ -18,6 +19,27 @@
 namespace rayo {
 
 using Light = std::variant<PointLight, DirectionalLight, AreaLight, SpotLight>;
+
+template <typename F, size_t... I>
+void for_each_light(F&& f, std::index_sequence<I...>) {
+    (f(std::variant_alternative_t<I, Light>{}), ...);
+}
+// Calls f(L{}) for each registered light type L, in order (the JSON reader's dispatch by
+// L::kName).
+template <typename F>
+void for_each_light(F&& f) {
+    for_each_light(f, std::make_index_sequence<std::variant_size_v<Light>>{});
+}
+
+// The solid-angle density of `direction` at `point` under sample_light with uniform u: what a
+// sampling integrator weighs a direction found by its scattering function with (multiple
+// importance sampling); 0 for the delta lights (point, spot, directional).
+inline float light_pdf(const Light& light, const Vec3& point, const Vec3& direction) {
+    return std::visit([&](const auto& l) { return l.pdf(point, direction); }, light);
+}
+inline bool light_is_delta(const Light& light) {
+    return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kDelta; }, light);
+}
 
 inline bool sample_light(const Light& light, const Vec3& point, const glm::vec2& u,
                          LightSample& out) {

@@ -3,7 +3,9 @@
 // 1/(a0 + a1·d + a2·d²); seed 003 eq. 2.8 clamps to 1; the inverse square of glTF's
 // KHR_lights_punctual, optionally windowed to a range).
 #include <algorithm>
+#include <optional>
 
+#include "core/shapes/shape_fields.h"
 #include "shading/light_sample.h"
 
 namespace rayo {
@@ -40,10 +42,24 @@ struct Attenuation {
 };
 
 struct PointLight {
+    static constexpr const char* kName = "point";
     Vec3 position{0.0f};
     Vec3 color{1.0f};
     float intensity = 1.0f;
     Attenuation attenuation;
+
+    // The scene-file fields (core/shapes/shape_fields.h; docs/scene-format.md, "lights").
+    template <typename F>
+    void fields(F& f) {
+        f("position", position, FieldKind::Point);
+        f.optional("color", color, FieldKind::Colour);
+        f.optional("intensity", intensity, FieldKind::NonNegative);
+        f.optional("attenuation", attenuation, FieldKind::Attenuation);
+    }
+    std::optional<FieldProblem> problem() const { return std::nullopt; }
+    // A single point: no direction has a density (sampling integrators treat it as a delta).
+    static constexpr bool kDelta = true;
+    float pdf(const Vec3& /*point*/, const Vec3& /*direction*/) const { return 0.0f; }
 
     int sample_count() const { return 1; }
     // False at the light's own position (no direction).

@@ -222,6 +222,12 @@ std::string describe(const Json& value) {
     return text;
 }
 
+// Whether T has a finish() to call once its fields are read (core/shapes/shape_fields.h).
+template <typename T, typename = void>
+struct has_finish : std::false_type {};
+template <typename T>
+struct has_finish<T, std::void_t<decltype(std::declval<T&>().finish())>> : std::true_type {};
+
 // A JSON value as a declared setting reads it (core/setting.h).
 SettingValue setting_value(const Json& value) {
     SettingValue v;
@@ -459,12 +465,20 @@ class SceneParser {
                     return "{\"min\": [x, y, z], \"max\": [x, y, z]}";
                 case FieldKind::Records:
                     return "an array of objects";
+                case FieldKind::Colour:
+                    return "a colour: [r, g, b] or a number (grey)";
+                case FieldKind::Attenuation:
+                    return "an attenuation object";
             }
             return "a value";
         }
         void read(const Json& value, const std::string& where, Vec3& member, FieldKind kind) {
             member = kind == FieldKind::Direction ? parser.direction(value, where)
+                     : kind == FieldKind::Colour  ? parser.colour(value, where)
                                                   : parser.vec3(value, where);
+        }
+        void read(const Json& value, const std::string& where, Attenuation& member, FieldKind) {
+            member = parser.parse_attenuation(value, where);
         }
         void read(const Json& value, const std::string& where, float& member, FieldKind kind) {
             const Bound bound = kind == FieldKind::Positive      ? Bound::Positive
@@ -593,6 +607,7 @@ class SceneParser {
         T record;
         FieldReader reader{*this, value, pointer};
         record.fields(reader);
+        if constexpr (has_finish<T>::value) record.finish();
         if (const std::optional<FieldProblem> problem = record.problem()) {
             // The field may be a path into a nested object ("bounds/max").
             std::string where = pointer;
@@ -1277,61 +1292,25 @@ Attenuation SceneParser::parse_attenuation(const Json& value, const std::string&
 
 Light SceneParser::parse_light(const Json& value, const std::string& pointer) const {
     require_object(value, pointer, "a light object");
+    // The registered lights (shading/light.h), by their kName: each read by its own fields(),
+    // but the area light, whose shape decides its fields (parse_area_light).
+    std::vector<std::string> names;
+    for_each_light([&](auto l) { names.push_back(decltype(l)::kName); });
+    std::vector<std::string> quoted;
+    for (const std::string& n : names) quoted.push_back("\"" + n + "\"");
     const std::string type =
-        choice(require(value, pointer, "type", "\"point\", \"spot\", \"directional\" or \"area\""),
-               child(pointer, "type"), {"point", "spot", "directional", "area"});
-    if (type == "area") return parse_area_light(value, pointer);
-    if (type == "spot") {
-        // glTF's KHR_lights_punctual spot (shading/spot_light.h), its cone angles in degrees:
-        // 0 <= inner_cone_angle < outer_cone_angle <= 90, glTF's defaults 0 and 45.
-        check_keys(value, pointer,
-                   {"type", "position", "direction", "color", "intensity", "attenuation",
-                    "inner_cone_angle", "outer_cone_angle"});
-        SpotLight light;
-        light.position =
-            vec3(require(value, pointer, "position", "[x, y, z]"), child(pointer, "position"));
-        light.direction = direction(require(value, pointer, "direction", "[x, y, z], non-zero"),
-                                    child(pointer, "direction"));
-        light.color = colour_or(value, pointer, "color", Vec3(1.0f));
-        light.intensity = real_or(value, pointer, "intensity", 1.0f, Bound::NonNegative);
-        if (const Json* v = find(value, "attenuation")) {
-            light.attenuation = parse_attenuation(*v, child(pointer, "attenuation"));
+        choice(require(value, pointer, "type", join_or(quoted)), child(pointer, "type"), names);
+    std::optional<Light> light;
+    for_each_light([&](auto l) {
+        using L = decltype(l);
+        if (type != L::kName) return;
+        if constexpr (std::is_same_v<L, AreaLight>) {
+            light = parse_area_light(value, pointer);
+        } else {
+            light = read_record<L>(value, pointer, {"type"});
         }
-        const float inner = real_or(value, pointer, "inner_cone_angle", 0.0f, Bound::NonNegative);
-        const float outer = real_or(value, pointer, "outer_cone_angle", 45.0f, Bound::Positive);
-        if (!(outer <= 90.0f)) {
-            fail(child(pointer, "outer_cone_angle"),
-                 "expected an angle in degrees in (0, 90], got " +
-                     describe(value["outer_cone_angle"]));
-        }
-        if (!(inner < outer)) {
-            fail(child(pointer, "inner_cone_angle"),
-                 "expected an angle in degrees below outer_cone_angle (" + describe(Json(outer)) +
-                     "), got " + describe(value["inner_cone_angle"]));
-        }
-        light.cos_inner = std::cos(glm::radians(inner));
-        light.cos_outer = std::cos(glm::radians(outer));
-        return light;
-    }
-    if (type == "point") {
-        check_keys(value, pointer, {"type", "position", "color", "intensity", "attenuation"});
-        PointLight light;
-        light.position =
-            vec3(require(value, pointer, "position", "[x, y, z]"), child(pointer, "position"));
-        light.color = colour_or(value, pointer, "color", Vec3(1.0f));
-        light.intensity = real_or(value, pointer, "intensity", 1.0f, Bound::NonNegative);
-        if (const Json* v = find(value, "attenuation")) {
-            light.attenuation = parse_attenuation(*v, child(pointer, "attenuation"));
-        }
-        return light;
-    }
-    check_keys(value, pointer, {"type", "direction", "color", "intensity"});
-    DirectionalLight light;
-    light.direction = direction(require(value, pointer, "direction", "[x, y, z], non-zero"),
-                                child(pointer, "direction"));
-    light.color = colour_or(value, pointer, "color", Vec3(1.0f));
-    light.intensity = real_or(value, pointer, "intensity", 1.0f, Bound::NonNegative);
-    return light;
+    });
+    return *light;
 }
 
 AreaLight SceneParser::parse_area_light(const Json& value, const std::string& pointer) const {

@@ -189,7 +189,7 @@ TEST_F(BadInputJson, UnknownEntitiesAndWrongArgumentCounts) {
             {"unknown object type", with_object(R"({"type": "torus"})"), "bad.json#/objects/0/type",
              "expected one of"},
             {"unknown light type", R"({"rayo": 1, "lights": [{"type": "laser"}]})",
-             "bad.json#/lights/0/type", "expected one of \"point\", \"spot\", \"directional\""},
+             "bad.json#/lights/0/type", "expected one of \"point\", \"directional\", \"area\", \"spot\""},
             {"spot cone wider than a hemisphere",
              R"({"rayo": 1, "lights": [{"type": "spot", "position": [0, 1, 0],
                  "direction": [0, -1, 0], "outer_cone_angle": 120}]})",
