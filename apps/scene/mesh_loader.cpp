@@ -34,8 +34,8 @@
 #include "core/path_util.h"
 #include "core/scene.h"
 #include "core/scene_limits.h"
-#include "shading/metallic_roughness.h"
 #include "core/shapes/mesh_tangents.h"
+#include "shading/metallic_roughness.h"
 
 namespace rayo {
 
@@ -639,6 +639,13 @@ AccessorView view_accessor(const tinygltf::Model& model, int accessor_index, int
     }
     const size_t element_size = static_cast<size_t>(component_size) * components;
     const size_t stride = view.byteStride > 0 ? view.byteStride : element_size;
+    // glTF 2.0 (3.6.2.4): a stride is a multiple of 4 in [4, 252], and elements do not overlap.
+    if (view.byteStride > 0 &&
+        (stride < element_size || stride % 4 != 0 || stride < 4 || stride > 252)) {
+        throw InputError(path, what + ": bufferView byteStride " + std::to_string(stride) +
+                                   " (expected a multiple of 4 in [4, 252], at least the " +
+                                   std::to_string(element_size) + " bytes of one element)");
+    }
     if (view.byteOffset > buffer.data.size() ||
         view.byteLength > buffer.data.size() - view.byteOffset) {
         throw InputError(path, what + ": bufferView exceeds its buffer");
@@ -1011,6 +1018,14 @@ struct GltfBuilder {
         if (node_index < 0 || static_cast<size_t>(node_index) >= model.nodes.size()) {
             throw InputError(path, "node " + std::to_string(node_index) + " does not exist");
         }
+        // The walk recurses once per level: a chain of tens of thousands of nodes would
+        // overflow the stack (docs/limits.md, "glTF node depth").
+        if (on_path.size() >= kMaxGltfNodeDepth) {
+            throw InputError(path, "node " + std::to_string(node_index) + " lies " +
+                                       std::to_string(on_path.size() + 1) +
+                                       " levels deep; the limit is " +
+                                       std::to_string(kMaxGltfNodeDepth) + " levels");
+        }
         if (!on_path.insert(node_index).second) {
             throw InputError(path, "node " + std::to_string(node_index) + " is its own ancestor");
         }
@@ -1036,10 +1051,36 @@ struct GltfBuilder {
 // Images are decoded by the render's texture system (shading/image_texture.h): keep their
 // encoded bytes (from a file, a buffer view or a data URI) as they are. tinygltf does not call
 // this for a missing file: its image stays empty (a warning, the material's factor).
+// An image in a bufferView is not read here: tinygltf hands over the view's range without
+// checking it against its buffer (a byteOffset past the end is read there), so those bytes are
+// copied by copy_buffer_view_images once the range is checked.
 bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
                       const unsigned char* bytes, int size, void*) {
+    if (image->bufferView != -1) return true;
     image->image.assign(bytes, bytes + size);
     return true;
+}
+
+// The encoded bytes of the images stored in bufferViews, each view's range checked against its
+// buffer first (tinygltf has checked that the view and the buffer exist).
+void copy_buffer_view_images(tinygltf::Model& model, const std::string& path) {
+    for (size_t i = 0; i < model.images.size(); ++i) {
+        tinygltf::Image& image = model.images[i];
+        if (image.bufferView < 0) continue;
+        const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(image.bufferView)];
+        const tinygltf::Buffer& buffer = model.buffers[static_cast<size_t>(view.buffer)];
+        if (view.byteOffset > buffer.data.size() ||
+            view.byteLength > buffer.data.size() - view.byteOffset) {
+            throw InputError(path, "image " + std::to_string(i) + ": bufferView " +
+                                       std::to_string(image.bufferView) + " (bytes " +
+                                       std::to_string(view.byteOffset) + " + " +
+                                       std::to_string(view.byteLength) + ") runs past buffer " +
+                                       std::to_string(view.buffer) + " of " +
+                                       std::to_string(buffer.data.size()) + " bytes");
+        }
+        const unsigned char* first = buffer.data.data() + view.byteOffset;
+        image.image.assign(first, first + view.byteLength);
+    }
 }
 
 // glTF sampler wrap modes (glTF 2.0, "Samplers"): 33071 CLAMP_TO_EDGE, 33648 MIRRORED_REPEAT,
@@ -1350,6 +1391,7 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
                                    one_line(err.empty() ? "cannot parse" : err));
     }
 
+    copy_buffer_view_images(model, path);
     decode_draco_primitives(model, path);
 
     std::vector<Material> converted;

@@ -14,6 +14,10 @@
 
 namespace rayo {
 
+// The deepest glTF node hierarchy read (the walk recurses once per level; real assets nest a
+// few dozen levels; docs/limits.md).
+constexpr size_t kMaxGltfNodeDepth = 1000;
+
 // What an import did besides building the mesh.
 struct MeshImportStats {
     size_t degenerate_triangles = 0;    // zero-area triangles dropped (not an error)
