@@ -1150,6 +1150,23 @@ struct GltfTextures {
             const glm::mat3 rotate(c, -s, 0, s, c, 0, 0, 0, 1);
             const glm::mat3 scaling(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
             transform = translation * rotate * scaling;
+            // Huge values overflow the float transform or the lookups after it (a rotation or
+            // scale of 1e308, an offset of 1e38 gave NaN pixels): the scene's number limit.
+            const double largest = std::max({std::abs(value_number(t, "rotation", -1, 0.0)),
+                                             std::abs(value_number(t, "offset", 0, 0.0)),
+                                             std::abs(value_number(t, "offset", 1, 0.0)),
+                                             std::abs(value_number(t, "scale", 0, 1.0)),
+                                             std::abs(value_number(t, "scale", 1, 1.0))});
+            bool finite = largest <= kMaxSceneMagnitude;
+            for (int column = 0; column < 3; ++column) {
+                for (int row = 0; row < 3; ++row)
+                    finite = finite && std::isfinite(transform[column][row]);
+            }
+            if (!finite) {
+                throw InputError(path, what +
+                                           ": KHR_texture_transform's offset, rotation and scale "
+                                           "must be finite numbers of magnitude <= 1e18");
+            }
         }
         if (tex_coord != 0) {
             warn(what + " uses TEXCOORD_" + std::to_string(tex_coord) +

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "apps/scene/json_loader.h"
@@ -198,6 +199,34 @@ TEST(ImageTextureScene, GltfBaseColorTextureShowsTheChecker) {
                         1e-3f, where.c_str());
         }
     }
+}
+
+TEST(ImageTextureScene, GltfTextureTransformBeyondTheNumberLimitIsRefused) {
+    // A rotation or scale of 1e308 overflows the float transform, an offset of 1e38 the lookups
+    // after it (NaN pixels before); 1e18, the scene's number limit, still loads.
+    const TempDir dir;
+    write_checker(dir.file("checker.png"));
+    const auto with = [&](const char* key, const Json& value) {
+        write_gltf_quad(
+            dir, {{"index", 0}, {"extensions", {{"KHR_texture_transform", {{key, value}}}}}});
+        try {
+            quad_scene(dir, "quad.gltf");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    for (const auto& [key, value] :
+         std::vector<std::pair<const char*, Json>>{{"rotation", 1e308},
+                                                   {"scale", Json::array({1e308, 1.0})},
+                                                   {"offset", Json::array({1e38, 0.0})}}) {
+        const std::string message = with(key, value);
+        EXPECT_NE(message.find("quad.gltf: material 'checker' baseColorTexture: "
+                               "KHR_texture_transform's offset, rotation and scale must be finite"),
+                  std::string::npos)
+            << key << ": " << message;
+    }
+    EXPECT_EQ(with("offset", Json::array({1e18, 0.0})), "accepted");
 }
 
 TEST(ImageTextureScene, GltfTextureTransformOffsetRotationScale) {
