@@ -125,6 +125,67 @@ bool check_face_indices(const aiScene& scene, const std::string& path) {
     return any_polygon;
 }
 
+// A plain "OFF" file's counts and face indices, checked before assimp reads it: assimp reserves
+// the declared vertex count before reading (2^31 vertices in a small file: bad_alloc) and clamps
+// an out-of-range face index to the last vertex (a silently different mesh). Refused at
+// `path:line`, as PLY's are. Other OFF variants (COFF, NOFF, ...) are left to assimp.
+void check_off_file(const std::string& bytes, const std::string& path) {
+    std::istringstream in(bytes);
+    std::string line;
+    size_t number = 0;
+    // The next line with content, comments (#) removed; false at the end.
+    const auto next = [&](std::istringstream& fields) {
+        while (std::getline(in, line)) {
+            ++number;
+            const size_t hash = line.find('#');
+            if (hash != std::string::npos) line.erase(hash);
+            if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+            fields.clear();
+            fields.str(line);
+            return true;
+        }
+        return false;
+    };
+    std::istringstream fields;
+    if (!next(fields)) return;
+    std::string keyword;
+    fields >> keyword;
+    if (keyword != "OFF") return;
+    long long vertices = -1, faces = -1;
+    if (!(fields >> vertices)) {
+        if (!next(fields)) return;
+        fields >> vertices;
+    }
+    fields >> faces;
+    const auto where = [&] { return path + ":" + std::to_string(number); };
+    if (vertices < 0 || faces < 0) throw InputError(where(), "expected the vertex and face counts");
+    // Each vertex and face takes a line of at least 6 bytes ("0 0 0\n", "3 0 1 2" less one).
+    if (static_cast<unsigned long long>(vertices) + static_cast<unsigned long long>(faces) >
+        bytes.size() / 6) {
+        throw InputError(where(), "declares " + std::to_string(vertices) + " vertices and " +
+                                      std::to_string(faces) + " faces, more than the file's " +
+                                      std::to_string(bytes.size()) + " bytes can hold");
+    }
+    for (long long v = 0; v < vertices; ++v) {
+        if (!next(fields)) return;  // short files: assimp's message
+    }
+    for (long long f = 0; f < faces; ++f) {
+        if (!next(fields)) return;
+        long long corners = 0;
+        fields >> corners;
+        for (long long c = 0; c < corners; ++c) {
+            long long index = 0;
+            if (!(fields >> index)) break;
+            if (index < 0 || index >= vertices) {
+                throw InputError(where(), "face " + std::to_string(f) + ": vertex index " +
+                                              std::to_string(index) +
+                                              " out of range (the file has " +
+                                              std::to_string(vertices) + " vertices)");
+            }
+        }
+    }
+}
+
 }  // namespace
 
 bool is_assimp_mesh_file(const std::string& path) {
@@ -140,6 +201,7 @@ TriangleMesh load_assimp_mesh(const std::string& path, std::vector<Material>& ma
     const std::string format = format_name(ext);
     if (bytes.empty()) throw InputError(path, "empty " + format + " file");
     if (ext == ".ply") check_ply_header(bytes, path);
+    if (ext == ".off") check_off_file(bytes, path);
 
     Assimp::Importer importer;
     // Points and lines (PLY point clouds, edges) are dropped; faces are triangulated.

@@ -155,6 +155,25 @@ TEST_F(AssimpLoader, FaceIndexOutOfRangeRefused) {
     EXPECT_NE(e.message().find("vertex index 7 out of range"), std::string::npos) << e.message();
 }
 
+TEST_F(AssimpLoader, OffIndexOutOfRangeAndAbsurdCountsRefusedAtTheirLine) {
+    // assimp clamps the index 99999 to the last vertex (the same image as the valid triangle)
+    // and reserves 2^31 vertices before reading one (bad_alloc): both refused at path:line.
+    const std::string far = write("far.off",
+                                  "OFF\n# a comment\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n"
+                                  "3 0 1 99999\n");
+    const InputError index = error_of(far);
+    EXPECT_EQ(index.where(), far + ":7") << index.what();
+    EXPECT_NE(index.message().find("face 0: vertex index 99999 out of range (the file has 3 "
+                                   "vertices)"),
+              std::string::npos)
+        << index.message();
+    const std::string huge = write("huge.off", "OFF\n2147483648 1 0\n0 0 0\n3 0 0 0\n");
+    const InputError count = error_of(huge);
+    EXPECT_EQ(count.where(), huge + ":2") << count.what();
+    EXPECT_NE(count.message().find("declares 2147483648 vertices"), std::string::npos)
+        << count.message();
+}
+
 TEST_F(AssimpLoader, EmptyGarbageAndPointOnlyFilesRefused) {
     const std::string empty = write("empty.stl", "");
     EXPECT_NE(error_of(empty).message().find("empty STL"), std::string::npos);
