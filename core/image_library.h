@@ -17,7 +17,7 @@
 namespace rayo {
 
 // Bumped whenever a class below changes.
-constexpr int kImageLibraryAbi = 2;
+constexpr int kImageLibraryAbi = 3;
 
 enum class PixelType { Float, Half, UInt8, UInt16 };
 
@@ -117,9 +117,11 @@ class ImageLibrary {
     virtual std::unique_ptr<ImageReader> open_reader(const std::string& path,
                                                      const std::string& bytes,
                                                      std::string& error) const = 0;
-    // Whether `bytes` decode as an image, the reader picked by `name`'s extension.
-    virtual bool readable(const std::string& name, const std::string& bytes,
-                          std::string& error) const = 0;
+    // Whether `bytes` decode as an image, the reader picked by `name`'s extension, of at most
+    // `max_pixels` pixels (width × height × depth from the header, before any pixel is decoded:
+    // "image is W×H; the limit is N pixels").
+    virtual bool readable(const std::string& name, const std::string& bytes, std::string& error,
+                          uint64_t max_pixels) const = 0;
     // A new texture system whose cache holds at most `max_memory_mb` of decoded tiles, cutting
     // scanline images into tiles of `autotile` and building their MIP levels.
     virtual std::unique_ptr<TextureCache> create_texture_cache(float max_memory_mb,

@@ -69,7 +69,9 @@ float srgb_to_linear(float encoded) {
 }
 
 bool image_source_readable(const ImageSource& source, std::string& error) {
-    if (image_library().readable(cache_name(source, 0), source.bytes, error)) return true;
+    if (image_library().readable(cache_name(source, 0), source.bytes, error, kMaxTexturePixels)) {
+        return true;
+    }
     if (error.empty()) error = "not an image OpenImageIO can read";
     return false;
 }
@@ -95,7 +97,7 @@ struct ImageTextures::Impl {
     std::vector<Entry> entries;
     std::map<const ImageSource*, size_t> index_of;
     std::vector<std::array<Use, kSlotCount>> uses;  // per material, per Slot
-    std::unique_ptr<TextureCache> system;  // last: destroyed before the bytes it reads
+    std::unique_ptr<TextureCache> system;           // last: destroyed before the bytes it reads
 
     size_t add(const std::shared_ptr<const ImageSource>& source) {
         const auto found = index_of.find(source.get());

@@ -70,6 +70,10 @@ class ImageTextures {
 // Checks that `source` decodes as an image (OpenImageIO reads its header from memory); false
 // with OpenImageIO's reason in `error` otherwise.
 bool image_source_readable(const ImageSource& source, std::string& error);
+// The most pixels a texture image may declare, checked from its header before it is decoded: a
+// 370-byte PNG declaring 100000 × 100000 took 24 GB (docs/limits.md, "Texture images"). 2^28,
+// the height fields' sample limit: 16384 × 16384.
+constexpr uint64_t kMaxTexturePixels = uint64_t(1) << 28;
 
 // The sRGB transfer function's inverse (IEC 61966-2-1): encoded [0, 1] -> linear.
 float srgb_to_linear(float encoded);

@@ -7,6 +7,7 @@
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/texture.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <memory>
 #include <string>
@@ -208,8 +209,8 @@ class OiioImageLibrary : public ImageLibrary {
         return std::make_unique<OiioReader>(std::move(input), std::move(memory));
     }
 
-    bool readable(const std::string& name, const std::string& bytes,
-                  std::string& error) const override {
+    bool readable(const std::string& name, const std::string& bytes, std::string& error,
+                  uint64_t max_pixels) const override {
         OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
         OIIO::ImageSpec config;
         void* proxy = &memory;
@@ -219,7 +220,17 @@ class OiioImageLibrary : public ImageLibrary {
             error = OIIO::geterror();
             return false;
         }
+        const OIIO::ImageSpec& spec = input->spec();
+        const uint64_t pixels = uint64_t(std::max(spec.width, 0)) *
+                                uint64_t(std::max(spec.height, 0)) *
+                                uint64_t(std::max(spec.depth, 1));
         input->close();
+        if (pixels > max_pixels) {
+            error = "image is " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                    (spec.depth > 1 ? "x" + std::to_string(spec.depth) : std::string()) +
+                    "; the limit is " + std::to_string(max_pixels) + " pixels";
+            return false;
+        }
         return true;
     }
 

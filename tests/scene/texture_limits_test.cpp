@@ -1,0 +1,76 @@
+// Texture images that declare more pixels than kMaxTexturePixels (shading/image_texture.h) are
+// refused from their header, before a pixel is decoded ("Robustness, round three", item 1: a
+// 370-byte PNG declaring 100000 × 100000 RGB took 24 GB and 455 s before the kernel killed it).
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+
+#include "apps/scene/json_loader.h"
+#include "core/error.h"
+#include "shading/image_texture.h"
+#include "tests/scene/scene_test_files.h"
+
+namespace rayo {
+namespace {
+
+// CRC-32 (ISO 3309, as PNG chunks use it).
+uint32_t crc32(const std::string& bytes) {
+    uint32_t crc = 0xFFFFFFFFu;
+    for (const unsigned char byte : bytes) {
+        crc ^= byte;
+        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+std::string big_endian(uint32_t v) {
+    return {static_cast<char>(v >> 24), static_cast<char>(v >> 16), static_cast<char>(v >> 8),
+            static_cast<char>(v)};
+}
+
+std::string chunk(const std::string& type, const std::string& data) {
+    return big_endian(static_cast<uint32_t>(data.size())) + type + data +
+           big_endian(crc32(type + data));
+}
+
+// A PNG whose valid header declares width × height 8-bit RGB, with one byte of pixel data.
+std::string png_header_only(uint32_t width, uint32_t height) {
+    const std::string ihdr =
+        big_endian(width) + big_endian(height) + std::string("\x08\x02\x00\x00\x00", 5);
+    // One IDAT chunk (libpng reads up to the first): a zlib stream of one stored zero byte.
+    const std::string idat("\x78\x01\x01\x01\x00\xfe\xff\x00\x00\x01\x00\x01", 12);
+    return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) + chunk("IDAT", idat) +
+           chunk("IEND", "");
+}
+
+std::string refusal(const rayo_test::TempDir& dir, const std::string& image) {
+    const std::string scene = R"({"rayo": 1, "materials": {"default": {"kd": {"image": ")" + image +
+                              R"("}}}, "objects": [{"type": "sphere", "center": [0, 0, 0],
+                              "radius": 1}]})";
+    try {
+        load_json_string(scene, "scene.json", dir.path());
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+TEST(TextureLimits, AnImageDeclaringMorePixelsThanTheLimitIsRefusedFromItsHeader) {
+    rayo_test::TempDir dir;
+    dir.write("bomb.png", png_header_only(100000, 100000));
+    const std::string message = refusal(dir, "bomb.png");
+    EXPECT_NE(message.find("bomb.png' cannot be read: image is 100000x100000; the limit is " +
+                           std::to_string(kMaxTexturePixels) + " pixels"),
+              std::string::npos)
+        << message;
+    // Just above the limit is refused too; the header of one at the limit is read (its missing
+    // pixel data is the decoder's business, later).
+    dir.write("above.png", png_header_only(16384, 16385));
+    EXPECT_NE(refusal(dir, "above.png").find("the limit is"), std::string::npos);
+    dir.write("at.png", png_header_only(16384, 16384));
+    EXPECT_EQ(refusal(dir, "at.png").find("the limit is"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rayo
