@@ -4,23 +4,12 @@
 #include <limits>
 
 #include "core/sampling.h"
-#include "shading/surface_interaction.h"
 #include "shading/light.h"
 #include "shading/normal_mapping.h"
+#include "shading/scattering/local_frame.h"
+#include "shading/surface_interaction.h"
 
 namespace rayo {
-namespace {
-
-// An orthonormal frame around the unit vector n (Duff et al. 2017, docs/references.md).
-void orthonormal_basis(const Vec3& n, Vec3& t, Vec3& b) {
-    const float sign = std::copysign(1.0f, n.z);
-    const float a = -1.0f / (sign + n.z);
-    const float c = n.x * n.y * a;
-    t = Vec3(1.0f + sign * n.x * n.x * a, sign * c, -sign * n.x);
-    b = Vec3(c, sign + n.y * n.y * a, -n.y);
-}
-
-}  // namespace
 
 Vec3 AmbientOcclusionIntegrator::radiance(const Ray& ray, const PixelSample& sample,
                                           RayCounters& counters) const {
@@ -34,8 +23,7 @@ Vec3 AmbientOcclusionIntegrator::radiance(const Ray& ray, const PixelSample& sam
     const Vec3 normal = face_viewer(surface.normal, surface.to_eye);
     const Vec3 kd = material.kd;  // textured, times the vertex colour
     const Vec3 origin = surface.shadow_origin;
-    Vec3 t, b;
-    orthonormal_basis(normal, t, b);
+    const LocalFrame frame = LocalFrame::from_normal(normal);
     const float reach =
         m_settings.distance > 0.0f ? m_settings.distance : std::numeric_limits<float>::infinity();
     const auto count = static_cast<uint32_t>(m_settings.samples);
@@ -48,7 +36,7 @@ Vec3 AmbientOcclusionIntegrator::radiance(const Ray& ray, const PixelSample& sam
         const float z = std::sqrt(std::max(0.0f, 1.0f - d.x * d.x - d.y * d.y));
         Ray probe;
         probe.origin = origin;
-        probe.direction = glm::normalize(d.x * t + d.y * b + z * normal);
+        probe.direction = glm::normalize(frame.to_world(Vec3(d.x, d.y, z)));
         probe.tnear = 0.0f;
         probe.tfar = reach;
         // Below the geometric surface (a shading normal tilted past it): blocked by the surface.
