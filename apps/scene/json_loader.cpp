@@ -945,14 +945,12 @@ void SceneParser::parse_render(const Json& value, const std::string& pointer,
     const Json* integrator = find(value, "integrator");
     if (integrator) s.integrator = parse_integrator(*integrator, child(pointer, "integrator"));
     if (auto* whitted = std::get_if<WhittedSettings>(&s.integrator)) {
-        // The direct keys first, then the integrator object's, which win.
-        WhittedSettings direct = *whitted;
-        direct.fields(reader);
+        // The direct keys, then the integrator object's, which win.
+        whitted->fields(reader);
         if (integrator) {
             FieldReader object_reader{*this, *integrator, child(pointer, "integrator")};
-            direct.fields(object_reader);
+            whitted->fields(object_reader);
         }
-        *whitted = direct;
     } else {
         FieldNames whitted_names;
         WhittedSettings().fields(whitted_names);
