@@ -170,6 +170,15 @@ std::unique_ptr<PartialRender> PartialRender::create(
     std::unique_ptr<PartialRender> partial(new PartialRender(output, grid, fingerprint));
     partial->m_keep_from = std::chrono::steady_clock::now() + keep_after;
     struct stat info {};
+    // Something that is not a file of ours under the name (a symbolic link, dangling or not, a
+    // directory, a FIFO): neither a render running now nor a partial render to resume.
+    if (::lstat(partial->m_path.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {
+        throw InputError(output,
+                         "'" + partial->m_path + "' exists and is " +
+                             (S_ISLNK(info.st_mode) ? "a symbolic link" : "not a regular file") +
+                             ", not a partial render rayo wrote: remove it, or write to "
+                             "another output");
+    }
     if (::stat(partial->m_path.c_str(), &info) == 0) {
         if (locked_by_another_render(partial->m_path))
             throw InputError(output, running_now_message(partial->m_path));

@@ -178,6 +178,26 @@ TEST_F(ResumeCli, ResumeWithoutAPartialRenderIsRefused) {
     EXPECT_EQ(listing(), std::set<std::string>{"scene.nff"});
 }
 
+// Something else under the partial render's name (a dangling symbolic link, a directory) is
+// named for what it is before the render starts, not taken for a render running now.
+TEST_F(ResumeCli, ALinkOrDirectoryAtThePartialRendersNameIsNamed) {
+    write("scene.nff", kSceneNff);
+    std::filesystem::create_symlink("nowhere", m_dir / "out.exr.rayo-partial");
+    const CommandResult r = run("render scene.nff -o out.exr --journal-after 0");
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("'out.exr.rayo-partial' exists and is a symbolic link, not a partial "
+                            "render rayo wrote"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("running now"), std::string::npos) << r.output;
+    std::filesystem::remove(m_dir / "out.exr.rayo-partial");
+    std::filesystem::create_directory(m_dir / "out.exr.rayo-partial");
+    const CommandResult d = run("render scene.nff -o out.exr --journal-after 0");
+    EXPECT_EQ(d.exit_code, 1) << d.output;
+    EXPECT_NE(d.output.find("exists and is not a regular file"), std::string::npos) << d.output;
+    EXPECT_EQ(listing().count("out.exr"), 0u);
+}
+
 // Tiles finished before --journal-after seconds into the render are not kept (2 s by default):
 // interrupted before, a render keeps nothing, says so, and leaves no file.
 TEST_F(ResumeCli, TilesBeforeJournalAfterAreNotKept) {
