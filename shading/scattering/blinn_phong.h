@@ -45,11 +45,7 @@ class BlinnPhong {
         Vec3 wi = glm::normalize(2.0f * o_h * h - o);
         if (wi.z <= 0.0f) return false;
         if (wo.z < 0.0f) wi = flip_z(wi);
-        out.wi = wi;
-        out.value = eval(wo, wi);
-        out.pdf = pdf(wo, wi);
-        out.delta = false;
-        return out.pdf > 0.0f;
+        return smooth_sample(*this, wo, wi, out);
     }
 
     // pdf_h(h)/(4 wo·h): the half-vector density through the reflection Jacobian.

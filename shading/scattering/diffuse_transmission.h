@@ -24,11 +24,7 @@ class DiffuseTransmission {
         Vec3 wi = sample_cosine_hemisphere(u);
         if (wo.z > 0.0f) wi = flip_z(wi);
         if (wi.z == 0.0f) return false;
-        out.wi = wi;
-        out.value = eval(wo, wi);
-        out.pdf = pdf(wo, wi);
-        out.delta = false;
-        return true;
+        return smooth_sample(*this, wo, wi, out);
     }
 
     float pdf(const Vec3& wo, const Vec3& wi) const {

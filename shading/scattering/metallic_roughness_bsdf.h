@@ -65,11 +65,7 @@ class MetallicRoughnessBsdf {
         }
         if (wi.z <= 0.0f) return false;
         if (wo.z < 0.0f) wi = flip_z(wi);
-        out.wi = wi;
-        out.value = eval(wo, wi);
-        out.pdf = pdf(wo, wi);
-        out.delta = false;
-        return out.pdf > 0.0f;
+        return smooth_sample(*this, wo, wi, out);
     }
 
     float pdf(const Vec3& wo, const Vec3& wi) const {

@@ -36,11 +36,7 @@ class ModifiedPhong {
         const float cos_a = std::pow(u.x, 1.0f / (m_exponent + 1.0f));
         const Vec3 wi = glm::normalize(lobe.to_world(spherical_direction(cos_a, 2.0f * kPi * u.y)));
         if (!same_hemisphere(wo, wi)) return false;
-        out.wi = wi;
-        out.value = eval(wo, wi);
-        out.pdf = pdf(wo, wi);
-        out.delta = false;
-        return out.pdf > 0.0f;
+        return smooth_sample(*this, wo, wi, out);
     }
 
     float pdf(const Vec3& wo, const Vec3& wi) const {

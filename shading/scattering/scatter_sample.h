@@ -17,4 +17,15 @@ struct ScatterSample {
     bool delta = false;
 };
 
+// The sample of a smooth (non-delta) lobe in direction `wi`: its value and pdf are the lobe's
+// eval and pdf there, so the two can never disagree. False where the pdf is 0.
+template <typename Lobe>
+bool smooth_sample(const Lobe& lobe, const Vec3& wo, const Vec3& wi, ScatterSample& out) {
+    out.wi = wi;
+    out.value = lobe.eval(wo, wi);
+    out.pdf = lobe.pdf(wo, wi);
+    out.delta = false;
+    return out.pdf > 0.0f;
+}
+
 }  // namespace rayo
