@@ -197,6 +197,20 @@ float MeshEmitter::pdf(const Vec3& point, const Vec3& direction) const {
     return density;
 }
 
+float MeshEmitter::pdf_at(const Vec3& point, const EmitterPoint& at) const {
+    if (m_triangles.empty()) return 0.0f;
+    const Vec3 offset = at.position - point;
+    const float distance2 = glm::dot(offset, offset);
+    const float cos_light = -glm::dot(at.normal, offset) / std::sqrt(distance2);
+    if (!(cos_light > 0.0f)) return 0.0f;
+    return luminance(at.radiance) / m_cdf.back() * distance2 / cos_light;
+}
+
+float AreaLight::pdf_at(const Vec3& point, const Vec3& direction, const EmitterPoint& at) const {
+    if (shape == Shape::Mesh) return mesh ? mesh->pdf_at(point, at) : 0.0f;
+    return pdf(point, direction);
+}
+
 float AreaLight::pdf(const Vec3& point, const Vec3& direction) const {
     switch (shape) {
         case Shape::Mesh:

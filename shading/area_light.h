@@ -44,6 +44,10 @@ class MeshEmitter {
     bool sample(const Vec3& point, const glm::vec2& u, LightSample& out) const;
     // The solid-angle density of `direction` under sample (AreaLight::pdf).
     float pdf(const Vec3& point, const Vec3& direction) const;
+    // The same for a direction whose first hit `at` is known to be one of the triangles: the
+    // pick's wᵢ/W over the area Aᵢ leaves luminance(radiance)/W per unit area, times d²/cos θl,
+    // without the search over every triangle that pdf makes.
+    float pdf_at(const Vec3& point, const EmitterPoint& at) const;
 
   private:
     std::vector<Triangle> m_triangles;
@@ -82,6 +86,10 @@ struct AreaLight {
     // from behind). Meshes: the sum over the emissive triangles the line crosses.
     static constexpr bool kDelta = false;
     float pdf(const Vec3& point, const Vec3& direction) const;
+    // The density for a ray from `point` along `direction` whose first hit `at` lies on this
+    // light's surface (a sampling integrator's BSDF ray that found the emitter: its multiple
+    // importance weight). Meshes: MeshEmitter::pdf_at; the other shapes: pdf.
+    float pdf_at(const Vec3& point, const Vec3& direction, const EmitterPoint& at) const;
 };
 
 }  // namespace rayo

@@ -13,6 +13,7 @@
 #include "core/sampling.h"
 #include "shading/area_light.h"
 #include "shading/directional_light.h"
+#include "shading/image_texture.h"
 #include "shading/point_light.h"
 #include "shading/spot_light.h"
 
@@ -37,13 +38,52 @@ void for_each_light(F&& f) {
 inline float light_pdf(const Light& light, const Vec3& point, const Vec3& direction) {
     return std::visit([&](const auto& l) { return l.pdf(point, direction); }, light);
 }
+// light_pdf for a direction whose first hit `at` is on the light's own surface (the hit's
+// material names the light: SurfaceCoefficients::emitter_light).
+inline float light_pdf_at(const Light& light, const Vec3& point, const Vec3& direction,
+                          const EmitterPoint& at) {
+    return std::visit(
+        [&](const auto& l) {
+            if constexpr (std::decay_t<decltype(l)>::kDelta) {
+                return 0.0f;
+            } else {
+                return l.pdf_at(point, direction, at);
+            }
+        },
+        light);
+}
 inline bool light_is_delta(const Light& light) {
     return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kDelta; }, light);
+}
+
+// The units of LightSample::radiance. A light with an extent (area lights, emissive meshes)
+// gives the radiance L of its surface, so its samples average to the irradiance E = ∫ L cos dω.
+// A point or a direction (point, spot, directional lights) has no radiance: it gives seed 000's
+// intensity Il (eq. [18]: kd·Il·(N·L)), what a white Lambertian surface facing it reflects, which
+// is the irradiance E = π·Il (docs/path-tracing.md, "Units").
+// Seed 000's local model (Whitted, ambient occlusion) shades with Il: an extended light's E is
+// scaled by 1/π, so a Lambertian surface shows kd·E/π as the radiosity solve gives it.
+inline float light_local_model_scale(const Light& light) {
+    return light_is_delta(light) ? 1.0f : 1.0f / kPi;
+}
+// A physically based integrator (path) weighs the incident radiance with the scattering function
+// f (a Lambertian surface: kd/π): a point's or a direction's Il becomes the irradiance π·Il, so
+// both kinds of integrator agree on the direct light of a Lambertian surface.
+inline float light_radiometric_scale(const Light& light) {
+    return light_is_delta(light) ? kPi : 1.0f;
 }
 
 inline bool sample_light(const Light& light, const Vec3& point, const glm::vec2& u,
                          LightSample& out) {
     return std::visit([&](const auto& l) { return l.sample(point, u, out); }, light);
+}
+
+// The sample's radiance with the emitter's image applied at the sampled point (emissiveTexture ×
+// emissiveFactor, MTL map_Ke × Ke: the radiance a camera ray sees there), before the pdf.
+inline Vec3 light_sample_radiance(const LightSample& sample, const ImageTextures* images) {
+    if (sample.emission_material == kNoEmissionImage || !images) return sample.radiance;
+    return sample.radiance * Vec3(images->lookup(sample.emission_material,
+                                                 ImageTextures::Slot::Emission, sample.uv, 0.0f));
 }
 
 inline int light_sample_count(const Light& light) {

@@ -27,4 +27,12 @@ struct LightSample {
     glm::vec2 uv{0.0f};
 };
 
+// A point of a light's own surface that a ray found (the first surface along it): what the light
+// needs to say how densely its sampling gives that point (AreaLight::pdf_at).
+struct EmitterPoint {
+    Vec3 position{0.0f};
+    Vec3 normal{0.0f};    // the geometric normal on the emitting side, unit
+    Vec3 radiance{0.0f};  // the surface's emitted radiance before any emission image
+};
+
 }  // namespace rayo

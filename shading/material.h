@@ -47,6 +47,10 @@ struct SurfaceCoefficients {
     Vec3 translucency{0.0f};  // perfect diffuse transmission, seed 001: lights behind the surface
     Vec3 absorption{0.0f};    // Beer–Lambert σ per unit length inside the object (seed 004)
     Vec3 emission{0.0f};      // radiance the surface's front side sends to every ray that sees it
+    // The light (index into ShadingScene::lights) that samples this emitter's surface, whose pdf
+    // a sampling integrator weighs a hit on it with (multiple importance sampling: the area
+    // lights' own surfaces, apps/scene/area_light_emitters.h); -1: no light samples it.
+    int32_t emitter_light = -1;
     // The glTF metallic-roughness parameters the Phong coefficients above were mapped from
     // (shading/metallic_roughness.h), kept for the integrators that sample the physically based
     // model itself (shading/scattering/material_bsdf.h); Whitted shades the mapping.

@@ -14,6 +14,7 @@ void add_area_light_emitters(SceneDescription& d) {
         m.name = "light " + std::to_string(i);
         m.ka = m.kd = m.ks = Vec3(0.0f);
         m.emission = light->radiance();
+        m.emitter_light = static_cast<int32_t>(i);
         const auto id = static_cast<uint32_t>(d.shading.materials.size());
         d.shading.materials.push_back(m);
         switch (light->shape) {
@@ -41,7 +42,8 @@ void add_area_light_emitters(SceneDescription& d) {
 }
 
 size_t add_mesh_emitter_light(SceneDescription& d, int samples) {
-    const std::vector<Material>& materials = d.shading.materials;
+    std::vector<Material>& materials = d.shading.materials;
+    std::vector<bool> emitting(materials.size(), false);
     auto emitter = std::make_shared<MeshEmitter>();
     auto add_mesh = [&](const TriangleMesh& mesh, const glm::mat4* transform,
                         uint32_t material_override) {
@@ -55,6 +57,7 @@ size_t add_mesh_emitter_light(SceneDescription& d, int samples) {
                 if (transform) p[k] = Vec3(*transform * glm::vec4(p[k], 1.0f));
             }
             const Material& m = materials[id];
+            emitting[id] = true;
             if (m.images.emission.used() && !mesh.uvs.empty()) {
                 // The emission image multiplies the factor at the sampled point.
                 const auto& v = mesh.triangles[t];
@@ -76,6 +79,10 @@ size_t add_mesh_emitter_light(SceneDescription& d, int samples) {
     light.shape = AreaLight::Shape::Mesh;
     light.samples = samples;
     light.mesh = emitter;
+    for (size_t id = 0; id < materials.size(); ++id) {
+        if (emitting[id])
+            materials[id].emitter_light = static_cast<int32_t>(d.shading.lights.size());
+    }
     d.shading.lights.push_back(light);
     return emitter->size();
 }

@@ -67,12 +67,8 @@ Vec3 AmbientOcclusionIntegrator::direct_light(const SurfaceHit& hit, const Vec3&
             }
             const float cosine = glm::dot(normal, ls.direction);
             if (cosine <= 0.0f) continue;
-            Vec3 radiance = ls.radiance / ls.pdf;
-            if (ls.emission_material != kNoEmissionImage && m_images) {
-                radiance *= Vec3(m_images->lookup(ls.emission_material,
-                                                  ImageTextures::Slot::Emission, ls.uv, 0.0f));
-            }
-            if (std::holds_alternative<AreaLight>(light)) radiance *= 1.0f / kPi;
+            const Vec3 radiance =
+                light_sample_radiance(ls, m_images) / ls.pdf * light_local_model_scale(light);
             Ray shadow;
             shadow.origin = origin;
             shadow.direction = ls.direction;

@@ -12,12 +12,14 @@
 #include <variant>
 
 #include "shading/integrators/ambient_occlusion.h"
+#include "shading/integrators/path.h"
 #include "shading/integrators/whitted.h"
 
 namespace rayo {
 
 // Whitted first: the default.
-using IntegratorSettings = std::variant<WhittedSettings, AmbientOcclusionSettings>;
+using IntegratorSettings =
+    std::variant<WhittedSettings, AmbientOcclusionSettings, PathSettings>;
 
 template <typename F, size_t... I>
 void for_each_integrator(F&& f, std::index_sequence<I...>) {

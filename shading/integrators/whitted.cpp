@@ -100,24 +100,18 @@ WhittedIntegrator::LightSide WhittedIntegrator::light_sample(const ShadingPoint&
     // Pure emitters skip the lights (other materials keep their shadow rays and counts as before).
     if (p.material().emissive() && !p.material().lit()) return LightSide::None;
     // An area light's surface shoots in the radiosity solve: its light is in the solution.
-    if (p.radiosity && std::holds_alternative<AreaLight>(light)) return LightSide::None;
+    if (p.radiosity && !light_is_delta(light)) return LightSide::None;
     LightSample sample;
     if (!sample_light(light, hit.position, u, sample)) return LightSide::None;
-    if (sample.emission_material != kNoEmissionImage && m_images) {
-        // An emitter's image at the sampled point (emissiveTexture × emissiveFactor, MTL
-        // map_Ke × Ke), the radiance a camera ray sees there (with_images).
-        sample.radiance *= Vec3(m_images->lookup(sample.emission_material,
-                                                 ImageTextures::Slot::Emission, sample.uv, 0.0f));
-    }
     to_light = sample.direction;
     const float light_distance = sample.distance;
-    light_radiance = sample.radiance / sample.pdf;
+    light_radiance = light_sample_radiance(sample, m_images) / sample.pdf;
     // An area light is radiometric (radiance L, so the samples average to its irradiance E):
     // its light on a Lambertian surface is kd·E/π, the same the radiosity solve gives it
     // (docs/radiosity.md, "The π of area lights"). Point and directional lights keep seed 000's
     // Il, with no 1/π. The whole Phong term is scaled, so the highlight keeps its ratio to the
     // diffuse light.
-    if (std::holds_alternative<AreaLight>(light)) light_radiance *= 1.0f / kPi;
+    light_radiance *= light_local_model_scale(light);
     const int count = light_sample_count(light);
     if (count > 1) light_radiance /= static_cast<float>(count);
     // Lights behind the surface (as seen from the arriving side) contribute nothing, unless the

@@ -21,6 +21,7 @@ namespace rayo {
 // albedo is ks·[2(n+2)(1 − 2^(−(n+4)/2))/(n+4) − (1 − 2^(−(n+2)/2))] (tested). Two-sided.
 class BlinnPhong {
   public:
+    static constexpr bool kDelta = false;
     BlinnPhong() = default;
     BlinnPhong(const Vec3& ks, float exponent) : m_ks(ks), m_exponent(std::max(exponent, 0.0f)) {}
 

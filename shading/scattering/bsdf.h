@@ -44,6 +44,18 @@ class Bsdf {
 
     int size() const { return m_count; }
 
+    // Whether any lobe is smooth (not a delta): only then can light sampling find a direction
+    // with a nonzero eval.
+    bool has_smooth_lobe() const {
+        for (int k = 0; k < m_count; ++k) {
+            if (!std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kDelta; },
+                            m_lobes[k])) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     Vec3 eval(const Vec3& wo, const Vec3& wi) const {
         Vec3 f(0.0f);
         for (int k = 0; k < m_count; ++k) {

@@ -26,6 +26,7 @@ namespace rayo {
 // rayo's scenes put lights outside.
 class Dielectric {
   public:
+    static constexpr bool kDelta = true;  // its directions are a point set: eval and pdf 0
     Dielectric() = default;
     explicit Dielectric(float ior) : m_ior(ior) {}
 

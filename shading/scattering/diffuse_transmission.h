@@ -12,6 +12,7 @@ namespace rayo {
 // Two-sided like Lambert: wi on the side opposite wo, whichever side wo is on.
 class DiffuseTransmission {
   public:
+    static constexpr bool kDelta = false;
     DiffuseTransmission() = default;
     explicit DiffuseTransmission(const Vec3& translucency) : m_translucency(translucency) {}
 

@@ -12,6 +12,7 @@ namespace rayo {
 // Two-sided: f = albedo/π whenever wi is on the same side as wo, whichever side that is.
 class Lambert {
   public:
+    static constexpr bool kDelta = false;
     Lambert() = default;
     explicit Lambert(const Vec3& albedo) : m_albedo(albedo) {}
 

@@ -29,6 +29,7 @@ namespace rayo {
 // mixture, so eval/pdf agree. Two-sided like the other reflection lobes.
 class MetallicRoughnessBsdf {
   public:
+    static constexpr bool kDelta = false;
     static constexpr float kDielectricF0 = 0.04f;  // glTF: ior 1.5, ((1.5 − 1)/(1.5 + 1))²
 
     MetallicRoughnessBsdf() = default;

@@ -92,6 +92,7 @@ inline Vec3 ggx_sample_visible_normal(const Vec3& wo, float alpha, const glm::ve
 // with F0 = 1 the albedo falls below 1 as α grows (energy lost to inter-reflection between facets).
 class Microfacet {
   public:
+    static constexpr bool kDelta = false;
     Microfacet() = default;
     Microfacet(float alpha, const Vec3& f0) : m_alpha(std::max(alpha, kMinGgxAlpha)), m_f0(f0) {}
 

@@ -15,6 +15,7 @@ namespace rayo {
 // the path throughput takes (scatter_sample.h). Two-sided: reflects on whichever side wo is.
 class Mirror {
   public:
+    static constexpr bool kDelta = true;  // its directions are a point set: eval and pdf 0
     Mirror() = default;
     explicit Mirror(const Vec3& weight) : m_weight(weight) {}
 

@@ -17,6 +17,7 @@ namespace rayo {
 // section 3). For large n the albedo at θo tends to ks·cos θo. Two-sided: wi on wo's side.
 class ModifiedPhong {
   public:
+    static constexpr bool kDelta = false;
     ModifiedPhong() = default;
     ModifiedPhong(const Vec3& ks, float exponent)
         : m_ks(ks), m_exponent(std::max(exponent, 0.0f)) {}

@@ -151,9 +151,9 @@ TEST(IntegratorSettings, ErrorsNameThePointerAndTheExpectation) {
         const char* text;
         const char* message;
     } cases[] = {
-        {R"({"rayo": 1, "render": {"integrator": {"type": "path"}}})",
+        {R"({"rayo": 1, "render": {"integrator": {"type": "paths"}}})",
          "scene.json#/render/integrator/type: expected one of \"whitted\", "
-         "\"ambient_occlusion\", got the string \"path\""},
+         "\"ambient_occlusion\", \"path\", got the string \"paths\""},
         {R"({"rayo": 1, "render": {"integrator": {"samples": 4}}})",
          "scene.json#/render/integrator"},
         {R"({"rayo": 1, "render": {"integrator": {"type": "ambient_occlusion", "samples": 0}}})",
@@ -181,7 +181,7 @@ TEST(IntegratorSettings, ErrorsNameThePointerAndTheExpectation) {
 }
 
 TEST(IntegratorSettings, TheRegistryNamesEveryIntegratorOnce) {
-    EXPECT_EQ(integrator_names(), "\"whitted\", \"ambient_occlusion\"");
+    EXPECT_EQ(integrator_names(), "\"whitted\", \"ambient_occlusion\", \"path\"");
     ASSERT_TRUE(integrator_named("ambient_occlusion"));
     EXPECT_EQ(integrator_named("ambient_occlusion")->index(), 1u);
     EXPECT_FALSE(integrator_named("Whitted"));
