@@ -13,13 +13,14 @@
 #include "core/sampling.h"
 #include "shading/area_light.h"
 #include "shading/directional_light.h"
+#include "shading/environment_light.h"
 #include "shading/image_texture.h"
 #include "shading/point_light.h"
 #include "shading/spot_light.h"
 
 namespace rayo {
 
-using Light = std::variant<PointLight, DirectionalLight, AreaLight, SpotLight>;
+using Light = std::variant<PointLight, DirectionalLight, AreaLight, SpotLight, EnvironmentLight>;
 
 template <typename F, size_t... I>
 void for_each_light(F&& f, std::index_sequence<I...>) {

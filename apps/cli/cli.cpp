@@ -27,6 +27,7 @@
 #include "apps/mpi/mpi_tile_distribution.h"
 #include "apps/mpi/mpi_world.h"
 #include "apps/scene/default_scene.h"
+#include "apps/scene/environment_image.h"
 #include "apps/scene/input_file.h"
 #include "apps/scene/preview.h"
 #include "apps/scene/renderer.h"
@@ -121,6 +122,9 @@ render options:
                            file has lights (KHR_lights_punctual) or emissive surfaces
   --no-instances           glTF files: flatten meshes that several nodes use instead of
                            keeping them once as instances
+  --environment FILE       an equirectangular image (HDR expected: .exr, .hdr) as the
+                           environment light, in place of the scene's; model files get no
+                           automatic lights with it (docs/path-tracing.md)
   --restrict-paths         files the scene references (meshes, material libraries, glTF
                            buffers) must lie in the scene's folder tree (untrusted scenes)
 @--tile-size@
@@ -322,6 +326,7 @@ struct RenderArgs {
     std::optional<ShapeMethod> shape_method;
     bool gi_view_patches = false;
     std::optional<std::string> gi_log;
+    std::optional<std::string> environment;  // --environment FILE
     SceneLoadOptions load_options;
     bool flat_spheres = false;
     bool single_rays = false;
@@ -385,6 +390,9 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
         } else if (a == "--nff-light-intensity") {
             r.load_options.nff.light_intensity =
                 static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
+        } else if (a == "--environment") {
+            r.environment = cursor.value();
+            r.load_options.model.environment_lit = true;
         } else if (a == "--restrict-paths") {
             r.load_options.restrict_paths = true;
         } else if (a == "--view-dir") {
@@ -471,6 +479,20 @@ void apply_overrides(const RenderArgs& args, SceneDescription& d) {
     if (args.max_error_px) d.settings.max_error_px = *args.max_error_px;
     if (args.shape_method) d.settings.shape_method = *args.shape_method;
     if (args.gi_view_patches) d.settings.gi_view_patches = true;
+    if (args.environment) {
+        // In place of the scene's environment, or added.
+        EnvironmentLight environment;
+        environment.map = read_environment_image(*args.environment, "--environment", {});
+        if (d.shading.environment >= 0) {
+            d.shading.lights[size_t(d.shading.environment)] = environment;
+        } else {
+            d.shading.environment = static_cast<int32_t>(d.shading.lights.size());
+            if (d.light_names.size() == d.shading.lights.size()) {
+                d.light_names.push_back("environment");
+            }
+            d.shading.lights.push_back(environment);
+        }
+    }
 }
 
 std::string default_output_path(const RenderArgs& args) {
@@ -551,6 +573,7 @@ RenderFingerprint render_fingerprint(const RenderArgs& args, const SceneDescript
     if (model.camera) framing << ", camera " << *model.camera;
     if (model.auto_lights) framing << ", auto lights";
     if (!model.instances) framing << ", no instances";
+    if (args.environment) framing << ", environment " << *args.environment;
     std::vector<std::pair<std::string, std::string>> entries = {
         {"rayo version", RAYO_VERSION},
         {"scene contents", contents},
@@ -638,6 +661,11 @@ std::string describe_light(const Light& light) {
         out << "directional direction ";
         vec(l->direction);
         color_and_intensity(l->color, l->intensity);
+    } else if (const auto* l = std::get_if<EnvironmentLight>(&light)) {
+        out << "environment";
+        if (l->map) out << " image " << l->map->width() << "x" << l->map->height();
+        color_and_intensity(l->color, l->intensity);
+        out << " rotation " << l->rotation << " samples " << l->samples;
     } else if (const auto* l = std::get_if<AreaLight>(&light)) {
         out << "area";
         if (l->mesh) out << " triangles " << l->mesh->size();

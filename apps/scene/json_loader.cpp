@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "apps/scene/area_light_emitters.h"
+#include "apps/scene/environment_image.h"
 #include "apps/scene/height_image.h"
 #include "apps/scene/input_file.h"
 #include "apps/scene/mesh_loader.h"
@@ -752,6 +753,10 @@ class SceneParser {
                    Vec3& factor) const;
     Light parse_light(const Json& value, const std::string& pointer) const;
     AreaLight parse_area_light(const Json& value, const std::string& pointer) const;
+    // The environment light, at "/environment" or as a light of type "environment"
+    // (`extra_keys`: {"type"}): its fields() and its "image".
+    EnvironmentLight parse_environment(const Json& value, const std::string& pointer,
+                                       const std::vector<std::string>& extra_keys) const;
     Fog parse_fog(const Json& value, const std::string& pointer) const;
     void parse_radiosity(const Json& value, const std::string& pointer, RadiositySettings& r) const;
     Attenuation parse_attenuation(const Json& value, const std::string& pointer) const;
@@ -796,7 +801,7 @@ SceneDescription SceneParser::parse(const Json& root) {
     }
     check_keys(root, "",
                {"rayo", "camera", "render", "background", "ambient_light", "fog", "textures",
-                "materials", "lights", "groups", "objects", "radiosity"});
+                "materials", "lights", "environment", "groups", "objects", "radiosity"});
 
     SceneDescription out;
     out.source = m_source;
@@ -834,6 +839,18 @@ SceneDescription SceneParser::parse(const Json& root) {
         for (size_t i = 0; i < lights->size(); ++i) {
             out.shading.lights.push_back(parse_light((*lights)[i], child("/lights", i)));
         }
+    }
+    const size_t listed_lights = out.shading.lights.size();
+    if (const Json* value = find(root, "environment")) {
+        out.shading.lights.push_back(parse_environment(*value, "/environment", {}));
+    }
+    for (size_t i = 0; i < out.shading.lights.size(); ++i) {
+        if (!std::holds_alternative<EnvironmentLight>(out.shading.lights[i])) continue;
+        if (out.shading.environment >= 0) {
+            fail(i < listed_lights ? child("/lights", i) : "/environment",
+                 "a second environment light: a scene has at most one");
+        }
+        out.shading.environment = static_cast<int32_t>(i);
     }
 
     // Groups before objects: instances name them.
@@ -1304,11 +1321,29 @@ Light SceneParser::parse_light(const Json& value, const std::string& pointer) co
         if (type != L::kName) return;
         if constexpr (std::is_same_v<L, AreaLight>) {
             light = parse_area_light(value, pointer);
+        } else if constexpr (std::is_same_v<L, EnvironmentLight>) {
+            light = parse_environment(value, pointer, {"type"});
         } else {
             light = read_record<L>(value, pointer, {"type"});
         }
     });
     return *light;
+}
+
+EnvironmentLight SceneParser::parse_environment(const Json& value, const std::string& pointer,
+                                                const std::vector<std::string>& extra_keys) const {
+    std::vector<std::string> keys = extra_keys;
+    keys.push_back("image");
+    EnvironmentLight light = read_record<EnvironmentLight>(value, pointer, keys);
+    if (const Json* image = find(value, "image")) {
+        const std::string image_pointer = child(pointer, "image");
+        if (!image->is_string() || image->get<std::string>().empty()) {
+            fail(image_pointer, "expected a path to an image file, got " + describe(*image));
+        }
+        light.map = read_environment_image(join_path(m_base_dir, image->get<std::string>()),
+                                           m_source + "#" + image_pointer, m_access);
+    }
+    return light;
 }
 
 AreaLight SceneParser::parse_area_light(const Json& value, const std::string& pointer) const {

@@ -220,13 +220,13 @@ SceneDescription load_model_scene(const std::string& path, const ModelFraming& f
     d.shading.background = kModelBackground;
 
     // The file's lights, its emissive triangles as an area light, and the automatic key and
-    // fill lights when the file has neither (or --auto-lights).
+    // fill lights when the file has neither and no environment lights it (or --auto-lights).
     for (const GltfLight& light : nodes.lights) {
         d.shading.lights.push_back(rayo_light(light));
         d.light_names.push_back(light.name);
     }
     if (add_mesh_emitter_light(d) > 0) d.light_names.push_back("emissive triangles");
-    if (d.shading.lights.empty() || framing.auto_lights) {
+    if ((d.shading.lights.empty() && !framing.environment_lit) || framing.auto_lights) {
         // A key light from the viewer's upper left and a dimmer fill from the right, both in
         // the camera's frame so that any view direction sees the lit side.
         const CameraDesc& camera = d.scene.camera;

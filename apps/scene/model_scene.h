@@ -23,6 +23,9 @@ struct ModelFraming {
     std::optional<std::string> camera;
     // Add the automatic key and fill lights even when the file has lights or emitters.
     bool auto_lights = false;
+    // An environment light will light the model (--environment): no automatic lights unless
+    // auto_lights.
+    bool environment_lit = false;
     // glTF meshes that several nodes use are kept once and placed as instances.
     bool instances = true;
 };

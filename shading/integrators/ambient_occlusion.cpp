@@ -15,7 +15,7 @@ Vec3 AmbientOcclusionIntegrator::radiance(const Ray& ray, const PixelSample& sam
                                           RayCounters& counters) const {
     ++counters.camera;
     SurfaceHit hit;
-    if (!m_accel.intersect(ray, hit)) return m_scene.background;
+    if (!m_accel.intersect(ray, hit)) return m_scene.escaped(ray.direction);
     SurfaceInteraction surface;
     m_surfaces.interact(ray, hit, surface);
     const SurfaceCoefficients& material = surface.material();

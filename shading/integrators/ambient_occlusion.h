@@ -3,7 +3,7 @@
 // fraction of a cosine-weighted hemisphere of `samples` rays that escapes within `distance`,
 // times the material's diffuse colour at the hit (textures and vertex colours included), plus, if
 // asked, the direct light of the scene's lights (docs/references.md, ambient-occlusion). Rays
-// that miss see the background. Registered in shading/integrators/integrator.h; its settings are
+// that miss see the environment or the background. Registered in shading/integrators/integrator.h; its settings are
 // its fields().
 #include <optional>
 

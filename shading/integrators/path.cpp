@@ -62,7 +62,7 @@ Vec3 PathIntegrator::radiance(const Ray& camera_ray, const PixelSample& sample,
     const Fog& fog = m_scene.fog;
     Vec3 radiance(0.0f), throughput(1.0f);
     Ray ray = camera_ray;
-    // The camera ray and rays after a delta lobe see emitters and the background unweighted.
+    // The camera ray and rays after a delta lobe see emitters and the environment unweighted.
     bool specular = true;
     float bsdf_pdf = 0.0f;  // the solid-angle density of the last BSDF direction
     Vec3 previous_point(0.0f);
@@ -83,7 +83,7 @@ Vec3 PathIntegrator::radiance(const Ray& camera_ray, const PixelSample& sample,
             throughput *= transmittance;
         }
         if (!found) {
-            if (specular) radiance += throughput * m_scene.background;
+            radiance += throughput * escaped(ray.direction, specular, bsdf_pdf, previous_point);
             break;
         }
         m_surfaces.interact(ray, v.hit, v.surface);
@@ -155,6 +155,16 @@ Vec3 PathIntegrator::radiance(const Ray& camera_ray, const PixelSample& sample,
     return radiance;
 }
 
+Vec3 PathIntegrator::escaped(const Vec3& direction, bool specular, float bsdf_pdf,
+                             const Vec3& from) const {
+    if (m_scene.environment < 0) return specular ? m_scene.background : Vec3(0.0f);
+    const Light& light = m_scene.lights[size_t(m_scene.environment)];
+    const Vec3 radiance = std::get<EnvironmentLight>(light).radiance(direction);
+    if (specular || m_settings.strategy == LightStrategy::Bsdf) return radiance;
+    if (m_settings.strategy == LightStrategy::Light) return Vec3(0.0f);
+    return radiance * power_heuristic(bsdf_pdf, light_pdf(light, from, direction));
+}
+
 Vec3 PathIntegrator::direct_light(const Vertex& v, const PixelSample& sample, uint32_t dimension,
                                   RayCounters& counters) const {
     Vec3 sum(0.0f);
@@ -193,8 +203,13 @@ Vec3 PathIntegrator::direct_light(const Vertex& v, const PixelSample& sample, ui
             light_sample_radiance(ls, m_images) * (light_radiometric_scale(light) / ls.pdf);
         // The fog between (a directional light's, at no distance, is not dimmed): what a BSDF
         // ray that finds the same emitter carries too, so the two strategies agree.
-        if (m_scene.fog.enabled() && std::isfinite(ls.distance)) {
-            incident *= std::exp(-m_scene.fog.density * ls.distance);
+        // The environment, infinitely far, is hidden by fog as a BSDF ray that escapes sees it.
+        if (m_scene.fog.enabled()) {
+            if (std::isfinite(ls.distance)) {
+                incident *= std::exp(-m_scene.fog.density * ls.distance);
+            } else if (!delta) {
+                continue;
+            }
         }
         sum += f * incident * (std::abs(wi.z) * weight);
     }

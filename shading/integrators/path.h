@@ -7,8 +7,9 @@
 // heuristic (Veach & Guibas 1995). Delta lobes (mirror, glass, seed 001) carry the light they
 // find unweighted. Russian roulette ends paths after `roulette_depth` bounces with an unbiased
 // weight. Beer–Lambert absorption inside dielectrics and the scene's fog as Whitted applies them
-// (seed 004). Rays that escape see the background colour from the camera and through delta
-// bounces only: it is a backdrop, not a light (docs/path-tracing.md). Registered in
+// (seed 004). Rays that escape see the environment light, which lights the scene as every other
+// light; without one, the background colour from the camera and through delta bounces only: it
+// is a backdrop, not a light (docs/path-tracing.md). Registered in
 // shading/integrators/integrator.h; its settings are its fields().
 #include <optional>
 
@@ -86,6 +87,11 @@ class PathIntegrator {
     // against BSDF sampling where both can find the light.
     Vec3 direct_light(const Vertex& v, const PixelSample& sample, uint32_t dimension,
                       RayCounters& counters) const;
+
+    // What a path that leaves the scene along `direction` after a vertex at `from` gains (before
+    // its throughput): the environment, weighted against light sampling unless the last bounce
+    // was a delta (`specular`, or the camera ray).
+    Vec3 escaped(const Vec3& direction, bool specular, float bsdf_pdf, const Vec3& from) const;
 
     const Accel& m_accel;
     const ShadingScene& m_scene;

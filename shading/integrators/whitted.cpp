@@ -60,10 +60,11 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const Vec3& weight, Ray
 Vec3 WhittedIntegrator::arriving(const Ray& ray, const SurfaceHit* hit, const Vec3& shaded,
                                  const SurfaceCoefficients* medium) const {
     if (!hit) {
-        // A miss sees the background, or the pure fog colour (infinite distance, seed 004).
+        // A miss sees the environment or the background, or the pure fog colour (infinite
+        // distance, seed 004).
         return through_volumes(
             ray, ray.tfar,
-            !medium && m_scene.fog.enabled() ? m_scene.fog.color : m_scene.background);
+            !medium && m_scene.fog.enabled() ? m_scene.fog.color : m_scene.escaped(ray.direction));
     }
     return through_volumes(ray, hit->t, through_medium(shaded, hit->t, medium));
 }
