@@ -209,17 +209,22 @@ void apply_setting_flags(const std::optional<std::string>& integrator,
         }
         std::visit([&](auto& s) { s.fields(applier); }, settings.integrator);
         if (applier.applied) continue;
-        std::string owners;
+        std::vector<std::string> owners;
         for_each_integrator([&](auto s) {
             ArityFinder finder{flag.flag};
             s.fields(finder);
             if (finder.arity != FlagArity::None) {
-                owners +=
-                    std::string(owners.empty() ? "" : ", ") + "\"" + decltype(s)::kName + "\"";
+                owners.push_back(std::string("\"") + decltype(s)::kName + "\"");
             }
         });
-        throw UsageError(flag.flag + ": a setting of the " + owners +
-                         " integrator, but this render's integrator is \"" +
+        // "the "whitted" integrator", "the "whitted" and "path" integrators".
+        std::string owner_text = owners.front();
+        for (size_t i = 1; i < owners.size(); ++i) {
+            owner_text += (i + 1 == owners.size() ? " and " : ", ") + owners[i];
+        }
+        owner_text += owners.size() > 1 ? " integrators" : " integrator";
+        throw UsageError(flag.flag + ": a setting of the " + owner_text +
+                         ", but this render's integrator is \"" +
                          integrator_name(settings.integrator) + "\" (--integrator chooses)");
     }
 }

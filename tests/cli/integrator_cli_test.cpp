@@ -45,11 +45,16 @@ TEST_F(IntegratorCli, AFlagOfAnotherIntegratorIsRefusedBeforeAnyWork) {
          "--ao-samples: a setting of the \"ambient_occlusion\" integrator, but "
          "this render's integrator is \"whitted\" (--integrator chooses)"},
         {"--integrator ambient_occlusion --max-depth 3",
-         "--max-depth: a setting of the \"whitted\" integrator, but this render's integrator is "
-         "\"ambient_occlusion\""},
-        {"--integrator path",
-         "--integrator: expected one of \"whitted\", \"ambient_occlusion\", "
-         "got 'path'"},
+         "--max-depth: a setting of the \"whitted\" and \"path\" integrators, but this "
+         "render's integrator is \"ambient_occlusion\""},
+        {"--light-strategy bsdf",
+         "--light-strategy: a setting of the \"path\" integrator, but this render's integrator "
+         "is \"whitted\""},
+        {"--integrator paths",
+         "--integrator: expected one of \"whitted\", \"ambient_occlusion\", \"path\", "
+         "got 'paths'"},
+        {"--integrator path --light-strategy both",
+         "--light-strategy: expected one of \"mis\", \"light\", \"bsdf\", got 'both'"},
         {"--integrator ambient_occlusion --ao-samples 0",
          "--ao-samples: expected an integer in [1, 4096], got '0'"},
         {"--shadows soft", "--shadows: expected one of \"opaque\", \"filtered\", got 'soft'"},
@@ -60,6 +65,19 @@ TEST_F(IntegratorCli, AFlagOfAnotherIntegratorIsRefusedBeforeAnyWork) {
         EXPECT_EQ(r.exit_code, 2) << c.args;
         EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << " -> " << r.output;
         EXPECT_EQ(listing().count("out.png"), 0u) << c.args;
+    }
+}
+
+TEST_F(IntegratorCli, AnEnvironmentThatCannotBeReadIsRefusedBeforeAnyOutput) {
+    write("scene.nff", kNff);
+    for (const char* image : {"missing.exr", "scene.nff"}) {
+        const CommandResult r = run(
+            std::string("render scene.nff -o out.png --integrator path --environment ") + image);
+        EXPECT_EQ(r.exit_code, 1) << image;
+        EXPECT_NE(r.output.find(std::string("--environment: ")), std::string::npos)
+            << image << " -> " << r.output;
+        EXPECT_NE(r.output.find(image), std::string::npos) << r.output;
+        EXPECT_EQ(listing().count("out.png"), 0u) << image;
     }
 }
 
