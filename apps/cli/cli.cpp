@@ -667,8 +667,10 @@ std::string describe_light(const Light& light) {
         color_and_intensity(l->color, l->intensity);
         out << " rotation " << l->rotation << " samples " << l->samples;
     } else if (const auto* l = std::get_if<AreaLight>(&light)) {
-        out << "area";
+        static const char* const kShapes[] = {"rectangle", "disk", "sphere", "mesh"};
+        out << "area " << kShapes[static_cast<int>(l->shape)];
         if (l->mesh) out << " triangles " << l->mesh->size();
+        if (!l->mesh) color_and_intensity(l->color, l->intensity);
         out << " area " << l->area() << " samples " << l->samples;
     }
     return out.str();
@@ -1232,11 +1234,11 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
             out << "\n";
         }
     }
-    if (!d.light_names.empty()) {
-        for (size_t i = 0; i < d.shading.lights.size(); ++i) {
-            out << "light " << i << " '" << (i < d.light_names.size() ? d.light_names[i] : "")
-                << "' " << describe_light(d.shading.lights[i]) << "\n";
-        }
+    // Every light, with the name the file gives it (model files), else none.
+    for (size_t i = 0; i < d.shading.lights.size(); ++i) {
+        out << "light " << i;
+        if (i < d.light_names.size()) out << " '" << d.light_names[i] << "'";
+        out << " " << describe_light(d.shading.lights[i]) << "\n";
     }
     for (const std::string& w : d.warnings) out << "warning: " << w << "\n";
     return 0;

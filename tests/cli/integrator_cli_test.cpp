@@ -81,6 +81,25 @@ TEST_F(IntegratorCli, AnEnvironmentThatCannotBeReadIsRefusedBeforeAnyOutput) {
     }
 }
 
+TEST_F(IntegratorCli, InfoListsEveryLightOfAJsonScene) {
+    write("lit.json", R"({"rayo": 1, "environment": {"color": [0.2, 0.3, 0.4], "rotation": 15},
+      "lights": [{"type": "point", "position": [0, 2, 0]},
+                 {"type": "area", "shape": "disk", "center": [0, 3, 0], "normal": [0, -1, 0],
+                  "radius": 0.5}]})");
+    const CommandResult r = run("info lit.json");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("light 0 point position 0 2 0 color 1 1 1 intensity 1\n"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("light 1 area disk color 1 1 1 intensity 1 area 0.785398 samples 16\n"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("light 2 environment color 0.2 0.3 0.4 intensity 1 rotation 15 "
+                            "samples 16\n"),
+              std::string::npos)
+        << r.output;
+}
+
 TEST_F(IntegratorCli, AFlagAndItsJsonFieldShareOneBound) {
     // --spp and "render": {"spp"} are one declaration (RenderSettings::fields): the same limit,
     // the same words, whatever kMaxSpp is.
