@@ -687,6 +687,17 @@ std::string view_text(const CameraDesc& cam) {
     return text.str();
 }
 
+// The --stats table's times: milliseconds below a minute (measurements, bench/*.sh), else as
+// the progress line's.
+std::string stats_seconds(double seconds) {
+    if (!std::isfinite(seconds) || seconds < 0.0 || seconds >= 60.0) {
+        return format_duration(seconds);
+    }
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3fs", seconds);
+    return buffer;
+}
+
 void print_stats_table(std::ostream& out, const SceneDescription& d, const RenderResult& r,
                        double parse_s, double write_s, bool streamed) {
     const RayCounters& c = r.counters;
@@ -739,12 +750,12 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
     }
     out << ""
         << "  integrator                  " << integrator_summary(d.settings.integrator) << "\n"
-        << "  time parse                  " << format_duration(parse_s) << "\n"
-        << "  time BVH build              " << format_duration(r.bvh_seconds) << "\n"
-        << "  time render                 " << format_duration(r.render_seconds) << "\n"
+        << "  time parse                  " << stats_seconds(parse_s) << "\n"
+        << "  time BVH build              " << stats_seconds(r.bvh_seconds) << "\n"
+        << "  time render                 " << stats_seconds(r.render_seconds) << "\n"
         << "  time write                  "
         << (streamed ? std::to_string(write_s) + " s after the last tile (streamed output)"
-                     : format_duration(write_s))
+                     : stats_seconds(write_s))
         << "\n"
         << "  rays camera                 " << c.camera << "\n"
         << "  rays shadow                 " << c.shadow << "\n"
@@ -771,7 +782,7 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
             << "  radiosity unshot energy     " << std::scientific << std::setprecision(3)
             << rs.unshot_fraction << " of the emitted\n"
             << std::defaultfloat << "  radiosity form-factor rays  " << rs.form_factor_rays << "\n"
-            << "  time radiosity solve        " << format_duration(rs.seconds) << "\n";
+            << "  time radiosity solve        " << stats_seconds(rs.seconds) << "\n";
     }
 }
 
