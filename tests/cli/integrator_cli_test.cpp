@@ -1,7 +1,10 @@
 // The registered integrators and the declared settings on the command line: --integrator and
 // the flags generated from each integrator's fields, a flag given to the wrong integrator, and
 // one declaration behind a flag and its JSON field (the same bound, the same message).
+#include <OpenImageIO/imageio.h>
+
 #include <string>
+#include <vector>
 
 #include "apps/scene/scene_description.h"
 #include "tests/cli/cli_fixture.h"
@@ -79,6 +82,31 @@ TEST_F(IntegratorCli, AnEnvironmentThatCannotBeReadIsRefusedBeforeAnyOutput) {
         EXPECT_NE(r.output.find(image), std::string::npos) << r.output;
         EXPECT_EQ(listing().count("out.png"), 0u) << image;
     }
+}
+
+TEST_F(IntegratorCli, AModelUnderAnEnvironmentGetsNoAutomaticLights) {
+    // A 4x2 grey sky, as an EXR the test writes.
+    {
+        auto out = OIIO::ImageOutput::create((m_dir / "sky.exr").string());
+        ASSERT_TRUE(out);
+        ASSERT_TRUE(out->open((m_dir / "sky.exr").string(),
+                              OIIO::ImageSpec(4, 2, 3, OIIO::TypeDesc::FLOAT)));
+        const std::vector<float> grey(4 * 2 * 3, 0.5f);
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, grey.data()));
+        out->close();
+    }
+    write("tri.obj", "v -1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const CommandResult lit = run("render tri.obj -o lit.png --width 32 --stats");
+    ASSERT_EQ(lit.exit_code, 0) << lit.output;
+    EXPECT_NE(lit.output.find("'key' directional"), std::string::npos) << lit.output;
+    const CommandResult sky =
+        run("render tri.obj -o sky.png --width 32 --stats --integrator path --environment sky.exr");
+    ASSERT_EQ(sky.exit_code, 0) << sky.output;
+    EXPECT_EQ(sky.output.find("'key'"), std::string::npos) << sky.output;
+    EXPECT_NE(sky.output.find("'environment' environment image 4x2"), std::string::npos)
+        << sky.output;
+    EXPECT_NE(sky.output.find("32x24 1spp path"), std::string::npos) << sky.output;
+    EXPECT_EQ(listing().count("sky.png"), 1u);
 }
 
 TEST_F(IntegratorCli, InfoListsEveryLightOfAJsonScene) {
