@@ -39,7 +39,10 @@ void expect_streams_match_single_rays(SceneDescription d, const std::string& nam
     if (wavefront) modes.push_back(true);
     for (bool stream_secondary : modes) {
         d.settings.coherent = true;
-        d.settings.whitted().stream_secondary = stream_secondary;
+        // The wavefront is Whitted's; the other integrators' coherent entry is theirs alone.
+        if (auto* whitted = std::get_if<WhittedSettings>(&d.settings.integrator)) {
+            whitted->stream_secondary = stream_secondary;
+        }
         const RenderResult streams = render_scene(d, 2, false);
         const std::string what = name + (stream_secondary ? " (secondary streams)" : "");
         EXPECT_TRUE(same_bits(single.film, streams.film))
