@@ -5,11 +5,14 @@
 // (shading/light_sample.h; u in [0,1)² picks a point on lights with an extent). Adding a light
 // type is its file pair and its entry in the list below; the integrator only calls
 // sample_light, light_sample_count and light_sample_u (docs/architecture.md, "Extension points").
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <utility>
 #include <variant>
 
+#include "core/ray.h"
 #include "core/sampling.h"
 #include "shading/area_light.h"
 #include "shading/directional_light.h"
@@ -85,6 +88,25 @@ inline Vec3 light_sample_radiance(const LightSample& sample, const ImageTextures
     if (sample.emission_material == kNoEmissionImage || !images) return sample.radiance;
     return sample.radiance * Vec3(images->lookup(sample.emission_material,
                                                  ImageTextures::Slot::Emission, sample.uv, 0.0f));
+}
+
+// The shadow ray of a light sample taken at `point`, from `origin` (the point offset off its
+// surface): to just short of the light's point, so that the light's own surface does not block
+// it, or unbounded toward a light infinitely far.
+inline Ray light_shadow_ray(const Vec3& point, const Vec3& origin, const LightSample& sample) {
+    Ray shadow;
+    shadow.origin = origin;
+    shadow.direction = sample.direction;
+    shadow.tnear = 0.0f;
+    if (sample.on_surface || std::isfinite(sample.distance)) {
+        const Vec3 offset = point + sample.distance * sample.direction - origin;
+        const float length = glm::length(offset);
+        shadow.direction = offset / length;
+        shadow.tfar = length * (1.0f - 1e-5f);
+    } else {
+        shadow.tfar = std::numeric_limits<float>::infinity();
+    }
+    return shadow;
 }
 
 inline int light_sample_count(const Light& light) {

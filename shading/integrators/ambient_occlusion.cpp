@@ -69,20 +69,8 @@ Vec3 AmbientOcclusionIntegrator::direct_light(const SurfaceHit& hit, const Vec3&
             if (cosine <= 0.0f) continue;
             const Vec3 radiance =
                 light_sample_radiance(ls, m_images) / ls.pdf * light_local_model_scale(light);
-            Ray shadow;
-            shadow.origin = origin;
-            shadow.direction = ls.direction;
-            shadow.tnear = 0.0f;
-            if (ls.on_surface || std::isfinite(ls.distance)) {
-                const Vec3 offset = hit.position + ls.distance * ls.direction - origin;
-                const float length = glm::length(offset);
-                shadow.direction = offset / length;
-                shadow.tfar = length * (1.0f - 1e-5f);
-            } else {
-                shadow.tfar = std::numeric_limits<float>::infinity();
-            }
             ++counters.shadow;
-            if (m_accel.occluded(shadow)) continue;
+            if (m_accel.occluded(light_shadow_ray(hit.position, origin, ls))) continue;
             sum += kd * radiance * cosine / static_cast<float>(count);
         }
     }

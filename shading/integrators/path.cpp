@@ -180,21 +180,10 @@ Vec3 PathIntegrator::direct_light(const Vertex& v, const PixelSample& sample, ui
         const Vec3 wi = v.frame.to_local(ls.direction);
         const Vec3 f = v.bsdf.eval(v.wo, wi);
         if (f == Vec3(0.0f)) continue;
-        Ray shadow;
-        if (!v.leave(ls.direction, wi, shadow.origin)) continue;
-        shadow.direction = ls.direction;
-        shadow.tnear = 0.0f;
-        if (ls.on_surface || std::isfinite(ls.distance)) {
-            // To just short of the light's point (its own surface must not block it).
-            const Vec3 offset = point + ls.distance * ls.direction - shadow.origin;
-            const float length = glm::length(offset);
-            shadow.direction = offset / length;
-            shadow.tfar = length * (1.0f - 1e-5f);
-        } else {
-            shadow.tfar = std::numeric_limits<float>::infinity();
-        }
+        Vec3 origin;
+        if (!v.leave(ls.direction, wi, origin)) continue;
         ++counters.shadow;
-        if (m_accel.occluded(shadow)) continue;
+        if (m_accel.occluded(light_shadow_ray(point, origin, ls))) continue;
         float weight = 1.0f;
         if (!delta && m_settings.strategy == LightStrategy::Mis) {
             weight = power_heuristic(ls.pdf, v.bsdf.pdf(v.wo, wi));
