@@ -61,6 +61,7 @@ hecht-2002 ~ Hecht ~ Hecht 2002
 heitz-2014 ~ Heitz 2014|Masking-\s*Shadowing ~ Heitz 2014
 heitz-2018 ~ Heitz 2018|Visible Normals ~ Heitz 2018
 iec-61966-2-1 ~ IEC 61966-2-1 ~
+kajiya-1986 ~ (?<!& )Kajiya 1986|rendering equation ~ Kajiya 1986
 kay-kajiya-1986 ~ Kajiya ~ Kay 1986
 khr-draco-mesh-compression ~ KHR_draco_mesh_compression ~
 khr-lights-punctual ~ KHR_lights_punctual ~
@@ -79,7 +80,7 @@ moller-trumbore-1997 ~ Möller.Trumbore ~ Möller 1997
 muller-2003 ~ Müller, Charypar ~ Müller 2003
 newell-1975 ~ Utah teapot|Newell's Utah ~ Newell 1975
 oneill-2014 ~ O'Neill|PCG32 ~ O'Neill 2014
-pbrt-3 ~ \bpbrt ~
+pbrt-3 ~ \bpbrt|Pharr, Jakob ~ Pharr 2016
 perlin-1985 ~ Perlin 1985 ~ Perlin 1985
 perlin-2002 ~ Perlin 2002|Perlin's improved ~ Perlin 2002
 phong-1975 ~ \bPhong\b ~ Phong 1975
@@ -92,6 +93,7 @@ sunday-2001 ~ Sunday's ~ Sunday 2001
 sutherland-1974 ~ Sutherland, Sproull|Newell's (method|normal) ~ Sutherland 1974
 taubin-1991 ~ Taubin ~ Taubin 1991
 trowbridge-reitz-1975 ~ Trowbridge ~ Trowbridge 1975, Reitz 1975
+veach-guibas-1995 ~ Veach (&|and) Guibas|power heuristic ~ Veach 1995
 veach-1997 ~ Veach ~ Veach 1997
 wallace-1989 ~ Wallace et al|Wallace, Elmquist ~ Wallace 1989
 walter-2007 ~ Walter et al|GGX ~ Walter 2007
