@@ -60,6 +60,21 @@ inline bool light_is_delta(const Light& light) {
     return std::visit([](const auto& l) { return std::decay_t<decltype(l)>::kDelta; }, light);
 }
 
+// Whether the radiosity solve shoots the light (an area light's surface is a patch), so that
+// its light on patch-covered surfaces is in the solution already; the others declare nothing.
+inline bool light_in_radiosity_solve(const Light& light) {
+    return std::visit(
+        [](const auto& l) {
+            using L = std::decay_t<decltype(l)>;
+            if constexpr (std::is_same_v<L, AreaLight>) {
+                return L::kInRadiositySolve;
+            } else {
+                return false;
+            }
+        },
+        light);
+}
+
 // The units of LightSample::radiance. A light with an extent (area lights, emissive meshes)
 // gives the radiance L of its surface, so its samples average to the irradiance E = ∫ L cos dω.
 // A point or a direction (point, spot, directional lights) has no radiance: it gives seed 000's

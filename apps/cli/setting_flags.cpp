@@ -181,7 +181,20 @@ void check_setting_flag(const SettingFlag& flag) {
             throw UsageError(flag.flag + ": " + problem->message);
         }
     }
-    for_each_integrator([&](auto s) { s.fields(applier); });
+    // A flag several integrators declare (--max-depth) passes when one of them takes the value;
+    // the render's own integrator checks it again against its bounds once the scene is known.
+    std::optional<UsageError> refusal;
+    bool accepted = false;
+    for_each_integrator([&](auto s) {
+        FlagApplier one{flag};
+        try {
+            s.fields(one);
+            accepted = accepted || one.applied;
+        } catch (const UsageError& e) {
+            if (!refusal) refusal = e;
+        }
+    });
+    if (!accepted && refusal) throw *refusal;
 }
 
 IntegratorSettings integrator_flag(const std::string& name) {

@@ -127,9 +127,10 @@ Vec3 PathIntegrator::radiance(const Ray& camera_ray, const PixelSample& sample,
         const bool transmitted = s.wi.z * v.wo.z < 0.0f;
         if (transmitted) {
             ++counters.refraction;
-            // A transmit colour below 1 tints what passes (seed 001's weight); entering an
-            // absorbing object the ray travels inside it, leaving it travels in the fog.
-            if (material.transmissive()) throughput *= material.transmit;
+            // A transmit colour below 1 tints what the dielectric lets through (seed 001's
+            // weight; the diffuse transmission lobe has its own colour); entering an absorbing
+            // object the ray travels inside it, leaving it travels in the fog.
+            if (s.delta && material.transmissive()) throughput *= material.transmit;
             medium = v.surface.entering && v.surface.base->absorbing() ? v.surface.base : nullptr;
         } else {
             ++counters.reflection;

@@ -101,7 +101,7 @@ WhittedIntegrator::LightSide WhittedIntegrator::light_sample(const ShadingPoint&
     // Pure emitters skip the lights (other materials keep their shadow rays and counts as before).
     if (p.material().emissive() && !p.material().lit()) return LightSide::None;
     // An area light's surface shoots in the radiosity solve: its light is in the solution.
-    if (p.radiosity && !light_is_delta(light)) return LightSide::None;
+    if (p.radiosity && light_in_radiosity_solve(light)) return LightSide::None;
     LightSample sample;
     if (!sample_light(light, hit.position, u, sample)) return LightSide::None;
     to_light = sample.direction;

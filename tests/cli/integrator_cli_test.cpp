@@ -53,6 +53,9 @@ TEST_F(IntegratorCli, AFlagOfAnotherIntegratorIsRefusedBeforeAnyWork) {
         {"--light-strategy bsdf",
          "--light-strategy: a setting of the \"path\" integrator, but this render's integrator "
          "is \"whitted\""},
+        {"--max-depth 100", "--max-depth: expected an integer in [0, 64], got '100'"},
+        {"--integrator path --max-depth 0",
+         "--max-depth: expected an integer in [1, 1024], got '0'"},
         {"--integrator paths",
          "--integrator: expected one of \"whitted\", \"ambient_occlusion\", \"path\", "
          "got 'paths'"},
@@ -107,6 +110,13 @@ TEST_F(IntegratorCli, AModelUnderAnEnvironmentGetsNoAutomaticLights) {
         << sky.output;
     EXPECT_NE(sky.output.find("32x24 1spp path"), std::string::npos) << sky.output;
     EXPECT_EQ(listing().count("sky.png"), 1u);
+}
+
+TEST_F(IntegratorCli, AFlagTwoIntegratorsShareTakesEachOnesBounds) {
+    write("scene.nff", kNff);
+    EXPECT_EQ(run("render scene.nff -o w.png --quiet --max-depth 0").exit_code, 0);
+    EXPECT_EQ(run("render scene.nff -o p.png --quiet --integrator path --max-depth 100").exit_code,
+              0);
 }
 
 TEST_F(IntegratorCli, InfoListsEveryLightOfAJsonScene) {
