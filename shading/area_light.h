@@ -85,8 +85,6 @@ struct AreaLight {
     // (unit), for multiple importance sampling: 0 where it never does (the light missed or seen
     // from behind). Meshes: the sum over the emissive triangles the line crosses.
     static constexpr bool kDelta = false;
-    // Its surface is an object of the scene, so the radiosity solve shoots its light.
-    static constexpr bool kInRadiositySolve = true;
     float pdf(const Vec3& point, const Vec3& direction) const;
     // The density for a ray from `point` along `direction` whose first hit `at` lies on this
     // light's surface (a sampling integrator's BSDF ray that found the emitter: its multiple

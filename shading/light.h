@@ -61,18 +61,10 @@ inline bool light_is_delta(const Light& light) {
 }
 
 // Whether the radiosity solve shoots the light (an area light's surface is a patch), so that
-// its light on patch-covered surfaces is in the solution already; the others declare nothing.
+// its light on patch-covered surfaces is in the solution already (apps/scene/area_light_emitters.h
+// puts only area lights' surfaces in the scene).
 inline bool light_in_radiosity_solve(const Light& light) {
-    return std::visit(
-        [](const auto& l) {
-            using L = std::decay_t<decltype(l)>;
-            if constexpr (std::is_same_v<L, AreaLight>) {
-                return L::kInRadiositySolve;
-            } else {
-                return false;
-            }
-        },
-        light);
+    return std::holds_alternative<AreaLight>(light);
 }
 
 // The units of LightSample::radiance. A light with an extent (area lights, emissive meshes)

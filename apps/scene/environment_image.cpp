@@ -3,9 +3,8 @@
 #include <cmath>
 #include <vector>
 
-#include "apps/scene/height_image.h"
+#include "apps/scene/image_file.h"
 #include "core/error.h"
-#include "core/image_library.h"
 #include "core/path_util.h"
 #include "shading/image_texture.h"
 
@@ -15,14 +14,8 @@ std::shared_ptr<const EnvironmentMap> read_environment_image(const std::string& 
                                                              const std::string& where,
                                                              const FileAccess& access) {
     const std::string what = "environment image '" + path + "'";
-    const std::string bytes =
-        read_input_file(path, where, "environment image", kMaxImageFileBytes, access);
-    std::string reason;
-    const std::unique_ptr<ImageReader> in = image_library().open_reader(path, bytes, reason);
-    if (!in) {
-        if (reason.empty()) reason = "not an image format OpenImageIO reads";
-        throw InputError(where, what + " cannot be read: " + reason);
-    }
+    const OpenedImageFile file = open_image_file(path, where, "environment image", access);
+    ImageReader* in = file.reader.get();
     const int width = in->width(), height = in->height();
     const uint64_t pixels = uint64_t(width) * uint64_t(height);
     const std::string size = std::to_string(width) + "x" + std::to_string(height);

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
+#include "apps/scene/image_file.h"
 #include "core/error.h"
-#include "core/image_library.h"
 #include "core/luminance.h"
 
 namespace rayo {
@@ -11,15 +11,8 @@ namespace rayo {
 HeightSamples read_height_image(const std::string& path, const std::string& where,
                                 const FileAccess& access) {
     const std::string what = "height image '" + path + "'";
-    const std::string bytes =
-        read_input_file(path, where, "height image", kMaxImageFileBytes, access);
-    // Decoded from the bytes read above (not reopened by name), when the format can.
-    std::string reason;
-    const std::unique_ptr<ImageReader> in = image_library().open_reader(path, bytes, reason);
-    if (!in) {
-        if (reason.empty()) reason = "not an image format OpenImageIO reads";
-        throw InputError(where, what + " cannot be read: " + reason);
-    }
+    const OpenedImageFile file = open_image_file(path, where, "height image", access);
+    ImageReader* in = file.reader.get();
     const int width = in->width(), height = in->height();
     const uint64_t samples = uint64_t(width) * uint64_t(height);
     if (width < 2 || height < 2 || in->depth() > 1 || samples > kMaxHeightSamples) {

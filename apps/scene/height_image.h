@@ -13,7 +13,6 @@
 
 namespace rayo {
 
-constexpr uint64_t kMaxImageFileBytes = uint64_t(1) << 30;  // height images: 1 GiB
 // Most samples a height field may have (16384², 1 GiB of floats); the charts of
 // docs/heightfields.md go to 8192².
 constexpr uint64_t kMaxHeightSamples = uint64_t(1) << 28;

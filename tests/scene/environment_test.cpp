@@ -18,6 +18,7 @@
 #include "core/sampling.h"
 #include "shading/environment_light.h"
 #include "shading/integrators/path.h"
+#include "tests/scene/path_estimate.h"
 #include "tests/test_helpers.h"
 
 namespace rayo {
@@ -60,28 +61,8 @@ std::string write_sky(const std::string& name) {
     return path;
 }
 
-struct Estimate {
-    double mean = 0.0, standard_error = 0.0;
-};
-
-Estimate estimate_along(const SceneDescription& d, const Vec3& origin, const Vec3& direction,
-                        uint32_t samples, int channel = 0) {
-    const Accel accel(d.scene, AccelOptions{});
-    const IntegratorContext context{accel, d.shading};
-    const PathIntegrator integrator(context, std::get<PathSettings>(d.settings.integrator));
-    Ray ray;
-    ray.origin = origin;
-    ray.direction = glm::normalize(direction);
-    RayCounters counters;
-    double sum = 0.0, sum2 = 0.0;
-    for (uint32_t s = 0; s < samples; ++s) {
-        const double x = integrator.radiance(ray, PixelSample{7, 2, s, samples}, counters)[channel];
-        sum += x;
-        sum2 += x * x;
-    }
-    const double mean = sum / samples;
-    return {mean, std::sqrt(std::max(0.0, sum2 / samples - mean * mean) / samples)};
-}
+using rayo_test::Estimate;
+using rayo_test::estimate_along;
 
 TEST(EnvironmentLight, ASphereInAUniformEnvironmentShowsItsAlbedo) {
     const struct {
@@ -104,7 +85,7 @@ TEST(EnvironmentLight, ASphereInAUniformEnvironmentShowsItsAlbedo) {
           "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]})";
         const SceneDescription d = load_json_string(text, "scene.json", "");
         // Off-centre, so the ray meets the sphere obliquely.
-        const Estimate e = estimate_along(d, Vec3(0.3f, 0.4f, 5), Vec3(0, 0, -1), 1 << 16);
+        const Estimate e = estimate_along(d, Vec3(0.3f, 0.4f, 5), Vec3(0, 0, -1), 1 << 16, 0, 7, 2);
         if (c.albedo < 0.0) {
             EXPECT_LE(e.mean, radiance + 4.0 * e.standard_error) << c.material;
             EXPECT_GT(e.mean, 0.5 * radiance) << c.material;
@@ -184,7 +165,7 @@ TEST(EnvironmentLight, TheStrategiesAgreeUnderAnImage) {
               "objects": [{"type": "disk", "center": [0, 0, 0], "normal": [0, 1, 0],
                            "radius": 100}]})",
             "scene.json", "");
-        e[k] = estimate_along(d, Vec3(0, 1, 1), Vec3(0, -1, -1), 1 << 16);
+        e[k] = estimate_along(d, Vec3(0, 1, 1), Vec3(0, -1, -1), 1 << 16, 0, 7, 2);
     }
     for (int a = 0; a < 3; ++a) {
         for (int b = a + 1; b < 3; ++b) {

@@ -19,6 +19,7 @@
 #include "core/accel.h"
 #include "core/error.h"
 #include "shading/integrators/integrator.h"
+#include "tests/scene/path_estimate.h"
 #include "tests/test_helpers.h"
 
 namespace rayo {
@@ -28,32 +29,8 @@ SceneDescription load(const std::string& text) {
     return load_json_string(text, "scene.json", "");
 }
 
-struct Estimate {
-    double mean = 0.0;
-    double standard_error = 0.0;
-};
-
-// The mean red radiance along one ray over `samples` camera samples of one pixel, with the
-// standard error of that mean.
-Estimate estimate_along(const SceneDescription& d, const Vec3& origin, const Vec3& direction,
-                        uint32_t samples) {
-    const Accel accel(d.scene, AccelOptions{});
-    const IntegratorContext context{accel, d.shading};
-    const PathIntegrator integrator(context, std::get<PathSettings>(d.settings.integrator));
-    Ray ray;
-    ray.origin = origin;
-    ray.direction = glm::normalize(direction);
-    RayCounters counters;
-    double sum = 0.0, sum2 = 0.0;
-    for (uint32_t s = 0; s < samples; ++s) {
-        const double x = integrator.radiance(ray, PixelSample{3, 5, s, samples}, counters).x;
-        sum += x;
-        sum2 += x * x;
-    }
-    const double mean = sum / samples;
-    const double variance = std::max(0.0, sum2 / samples - mean * mean);
-    return {mean, std::sqrt(variance / samples)};
-}
+using rayo_test::Estimate;
+using rayo_test::estimate_along;
 
 // A closed cube [-1, 1]³ of six polygons wound inward, so their emitting front faces the inside.
 std::string inward_cube() {
