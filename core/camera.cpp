@@ -154,12 +154,13 @@ Camera Camera::create(const CameraDesc& desc, const std::string& where) {
     camera.m_pixel_angle = 2.0f * std::tan(glm::radians(camera.m_vfov_degrees) / 2.0f) / h;
 
     // seed 002: CENTER = EYE + dis·VIEW;
-    // ORIGIN = CENTER − ((width−1)/2)·hpixel·HORZ + ((height−1)/2)·vpixel·VERT.
-    const Vec3 center = desc.eye + desc.distance * camera.m_view;
+    // ORIGIN = CENTER − ((width−1)/2)·hpixel·HORZ + ((height−1)/2)·vpixel·VERT, kept as
+    // ORIGIN − EYE.
     camera.m_step_right = hpixel * camera.m_right;
     camera.m_step_down = vpixel * camera.m_up;
-    camera.m_origin = center - ((w - 1.0f) / 2.0f) * camera.m_step_right +
-                      ((h - 1.0f) / 2.0f) * camera.m_step_down;
+    camera.m_origin_from_eye = desc.distance * camera.m_view -
+                               ((w - 1.0f) / 2.0f) * camera.m_step_right +
+                               ((h - 1.0f) / 2.0f) * camera.m_step_down;
     return camera;
 }
 
@@ -170,13 +171,13 @@ bool Camera::generate_other_ray(const glm::vec2& film, const glm::vec2& lens, Ra
             // passes the point where the pinhole ray meets the plane in focus, at
             // focus_distance along the view direction; its origin is the lens sample, mapped
             // to the lens disk (concentric map) in the plane of right and up through the eye.
-            const Vec3 on_window = m_origin + film.x * m_step_right - film.y * m_step_down;
-            // on_window − eye has view component `distance` (the window plane).
-            const Vec3 in_focus =
-                m_eye + (on_window - m_eye) * (m_focus_distance / m_desc.distance);
+            // window_from_eye has view component `distance` (the window plane). Both points
+            // relative to the eye, as the pinhole's.
+            const Vec3 in_focus = window_from_eye(film) * (m_focus_distance / m_desc.distance);
             const glm::vec2 disk = m_desc.lens_radius * concentric_disk(lens);
-            ray.origin = m_eye + disk.x * m_right + disk.y * m_up;
-            ray.direction = glm::normalize(in_focus - ray.origin);
+            const Vec3 on_lens = disk.x * m_right + disk.y * m_up;
+            ray.origin = m_eye + on_lens;
+            ray.direction = glm::normalize(in_focus - on_lens);
             return true;
         }
         case Projection::Fisheye: {

@@ -68,9 +68,8 @@ class Camera {
     // common case, is inline and first; the others are out of line.
     bool generate_ray(const glm::vec2& film, const glm::vec2& lens, Ray& ray) const {
         if (!m_pinhole) return generate_other_ray(film, lens, ray);
-        const Vec3 on_window = m_origin + film.x * m_step_right - film.y * m_step_down;
         ray.origin = m_eye;
-        ray.direction = glm::normalize(on_window - m_eye);
+        ray.direction = glm::normalize(window_from_eye(film));
         return true;
     }
     // The pinhole ray through (px, py), for callers that have no lens sample.
@@ -96,11 +95,17 @@ class Camera {
 
   private:
     bool generate_other_ray(const glm::vec2& film, const glm::vec2& lens, Ray& ray) const;
+    // The point of the window at film position `film`, relative to the eye: summed there, not
+    // in world space, so that an eye far from the origin (1e7 and beyond, where a float's ulp
+    // exceeds the window's size) keeps every pixel's direction (docs/limits.md, "Scale").
+    Vec3 window_from_eye(const glm::vec2& film) const {
+        return m_origin_from_eye + film.x * m_step_right - film.y * m_step_down;
+    }
 
     CameraDesc m_desc;
     Vec3 m_eye{0.0f};
     Vec3 m_view{0.0f}, m_right{0.0f}, m_up{0.0f};
-    Vec3 m_origin{0.0f};      // centre of pixel (0,0), seed 002 ORIGIN
+    Vec3 m_origin_from_eye{0.0f};  // centre of pixel (0,0), seed 002 ORIGIN, minus EYE
     Vec3 m_step_right{0.0f};  // hpixel·HORZ
     Vec3 m_step_down{0.0f};   // vpixel·VERT
     float m_hfov_degrees = 0.0f, m_vfov_degrees = 0.0f;

@@ -105,7 +105,7 @@ bool AreaLight::sample(const Vec3& point, const glm::vec2& u, LightSample& out) 
             return mesh && mesh->sample(point, u, out);
         case Shape::Rectangle:
             return flat_sample(point, corner + u.x * edge1 + u.y * edge2,
-                               glm::normalize(glm::cross(edge1, edge2)), area(), radiance(), out);
+                               unit_vector(glm::cross(edge1, edge2)), area(), radiance(), out);
         case Shape::Disk: {
             Vec3 t, b;
             basis(normal, t, b);
@@ -216,7 +216,7 @@ float AreaLight::pdf(const Vec3& point, const Vec3& direction) const {
         case Shape::Mesh:
             return mesh ? mesh->pdf(point, direction) : 0.0f;
         case Shape::Rectangle: {
-            const Vec3 n = glm::normalize(glm::cross(edge1, edge2));
+            const Vec3 n = unit_vector(glm::cross(edge1, edge2));
             Vec3 hit;
             if (!plane_crossing(point, direction, corner, n, hit)) return 0.0f;
             // The point's coordinates (a, b) in the edges' basis (the edges need not be

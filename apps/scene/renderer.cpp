@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <sstream>
 #include <thread>
 
 #include "core/accel.h"
@@ -17,6 +18,7 @@
 #include "core/error.h"
 #include "core/film.h"
 #include "core/render.h"
+#include "core/scene_bounds.h"
 #include "shading/cutouts.h"
 #include "shading/integrators/integrator.h"
 #include "shading/radiosity_field.h"
@@ -90,6 +92,26 @@ void check_material_ids(const SceneDescription& d) {
     }
 }
 
+// Refuses a scene whose triangles lie beyond the range Embree's triangle test computes in
+// (core/scene_bounds.h, kMaxTriangleProduct).
+void check_triangle_range(const Scene& scene, bool spheres_as_triangles, const Vec3& eye,
+                          const std::string& where) {
+    const double triangles = largest_triangle_coordinate(scene, spheres_as_triangles);
+    if (triangles == 0.0) return;
+    const double eye_distance = max_abs_component(eye);
+    const double product = (triangles + eye_distance) * (2.0 * triangles) * (2.0 * triangles);
+    if (product <= kMaxTriangleProduct) return;
+    std::ostringstream text;
+    text << "triangles lie up to " << triangles << " from the origin and the eye " << eye_distance
+         << ": Embree's triangle test multiplies a distance from the ray's origin by an edge "
+            "squared, here up to "
+         << product << ", beyond the " << kMaxTriangleProduct
+         << " a float holds with its sums (docs/limits.md, \"Scale\"; at unit distance from "
+            "the eye, triangles within about 2e12): scale the scene down or trace its shapes "
+            "analytically";
+    throw InputError(where, text.str());
+}
+
 }  // namespace
 
 int default_thread_count() {
@@ -151,6 +173,8 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     // loaded one unless some became meshes.
     ShapeChoices shape_choices = choose_shape_methods(description, camera);
     const Scene& scene = shape_choices.traced(description.scene);
+    check_triangle_range(scene, result.spheres.spheres.method == SphereMethod::Mesh,
+                         description.scene.camera.eye, description.source);
     AccelOptions accel_options;
     accel_options.spheres = result.spheres.spheres;
     accel_options.sphere_math = result.spheres.math;

@@ -198,7 +198,7 @@ void HeightField::surface(const Ray& ray, const ShapeHit& hit, SurfaceHit& out) 
     triangle(hit.part, c);
     const Vec3 p0 = vertex_at(c[0]), p1 = vertex_at(c[1]), p2 = vertex_at(c[2]);
     out.position = ray.at(hit.t);
-    out.geometric_normal = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+    out.geometric_normal = unit_vector(glm::cross(p1 - p0, p2 - p0));
     out.shading_normal = out.geometric_normal;
     if (smooth) {
         // Barycentrics of the hit in the triangle's footprint (the triangle projects onto the

@@ -113,7 +113,7 @@ class MeshBinding : public GeometryBinding {
         const auto& tri = mesh.triangles[prim];
         out.t = t;
         out.position = ray.at(t);
-        out.geometric_normal = glm::normalize(triangle_normal(mesh, prim));
+        out.geometric_normal = unit_vector(triangle_normal(mesh, prim));
         out.shading_normal = out.geometric_normal;
         // Interpolate vertex normals only where all three corners have one (a zero normal
         // marks a corner without: flat faces mixed into a smooth mesh).

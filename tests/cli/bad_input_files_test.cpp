@@ -230,6 +230,31 @@ TEST_F(BadInputFiles, ObjIndexErrorsAreFoundBeforeTheWholeFileIsParsed) {
                    "first index past the end");
 }
 
+// Scale (docs/limits.md, "Scale"): a triangle of ±3e12 seen from 1.2e13 aborted the process
+// inside Embree (exit 134, "all(valid, ray.valid())"); now refused before the BVH, with why. A
+// unit sphere 2e7 from the origin renders, with a warning that float is coarse there.
+TEST_F(BadInputFiles, ScenesBeyondTheTriangleRangeAreRefusedAndFarSmallObjectsWarned) {
+    write("far_triangle.json", R"({"rayo": 1, "camera": {"eye": [0, 0, 1.2e13], "look_at": [0, 0, 0],
+        "vfov": 60, "width": 16, "height": 16},
+        "lights": [{"type": "point", "position": [3e12, 6e12, 9e12]}],
+        "objects": [{"type": "polygon", "vertices": [[-3e12, -3e12, 0], [3e12, -3e12, 0],
+                                                     [0, 3e12, 0]]}]})");
+    expect_refused({"render", "far_triangle.json", "-o", "x.png"}, "far_triangle.json",
+                   "triangles lie up to 3e+12 from the origin and the eye 1.2e+13",
+                   "triangles beyond Embree's range");
+    write("far_sphere.json", R"({"rayo": 1, "camera": {"eye": [2e7, 0, 2], "look_at": [2e7, 0, 0],
+        "vfov": 60, "width": 16, "height": 16},
+        "lights": [{"type": "point", "position": [20000001, 1, 2]}],
+        "objects": [{"type": "sphere", "center": [2e7, 0, 0], "radius": 1}]})");
+    const WatchedResult r = run_watched({"render", "far_sphere.json", "-o", "far.png"}, 60);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("rayo: warning: 1 object(s) are smaller than 0.0001 of their "
+                            "distance from the origin"),
+              std::string::npos)
+        << r.output;
+    EXPECT_TRUE(fs::exists(m_dir / "far.png"));
+}
+
 // A write that fails (here: beyond the file-size limit, EFBIG) names the output the user gave,
 // not the temporary file, and gives the system's reason; nothing is left behind.
 TEST_F(BadInputFiles, WriteErrorsNameTheOutputAndTheReason) {
