@@ -17,7 +17,7 @@
 namespace rayo {
 
 // Bumped whenever a class below changes.
-constexpr int kImageLibraryAbi = 3;
+constexpr int kImageLibraryAbi = 4;
 
 enum class PixelType { Float, Half, UInt8, UInt16 };
 
@@ -78,6 +78,14 @@ class ImageReader {
     virtual std::string error() = 0;
 };
 
+// What an image's header says (its first subimage, full resolution).
+struct ImageHeader {
+    int width = 0, height = 0, depth = 1, channels = 0;
+    int bytes_per_channel = 1;  // as stored: 1 for 8-bit, 2 for 16-bit and half, 4 for float
+    bool tiled = false;         // tiles the texture system reads one at a time (tiled EXR, TIFF)
+    bool mipmapped = false;     // MIP levels in the file (maketx output)
+};
+
 enum class TextureWrapMode { Periodic, Clamp, Mirror };
 
 // One texture system (OpenImageIO's TextureSystem with its own cache). add() and the queries are
@@ -117,11 +125,15 @@ class ImageLibrary {
     virtual std::unique_ptr<ImageReader> open_reader(const std::string& path,
                                                      const std::string& bytes,
                                                      std::string& error) const = 0;
-    // Whether `bytes` decode as an image, the reader picked by `name`'s extension, of at most
-    // `max_pixels` pixels (width × height × depth from the header, before any pixel is decoded:
-    // "image is W×H; the limit is N pixels").
-    virtual bool readable(const std::string& name, const std::string& bytes, std::string& error,
-                          uint64_t max_pixels) const = 0;
+    // The header of `bytes` as an image, the reader picked by `name`'s extension, read before
+    // any pixel is decoded; false with the reader's reason in `error`.
+    virtual bool read_header(const std::string& name, const std::string& bytes, ImageHeader& header,
+                             std::string& error) const = 0;
+    // Whether every pixel of the image's first subimage decodes (a truncated or corrupt file
+    // fails here, where the texture system would shade with what it half-decoded), read in
+    // chunks of scanlines or tiles so that only the reader's own buffers grow with the image.
+    virtual bool decodes(const std::string& name, const std::string& bytes,
+                         std::string& error) const = 0;
     // A new texture system whose cache holds at most `max_memory_mb` of decoded tiles, cutting
     // scanline images into tiles of `autotile` and building their MIP levels.
     virtual std::unique_ptr<TextureCache> create_texture_cache(float max_memory_mb,

@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/error.h"
 #include "core/image_library.h"
 #include "shading/material.h"
 
@@ -69,11 +70,48 @@ float srgb_to_linear(float encoded) {
 }
 
 bool image_source_readable(const ImageSource& source, std::string& error) {
-    if (image_library().readable(cache_name(source, 0), source.bytes, error, kMaxTexturePixels)) {
-        return true;
+    ImageHeader header;
+    if (!image_library().read_header(cache_name(source, 0), source.bytes, header, error)) {
+        if (error.empty()) error = "not an image OpenImageIO can read";
+        return false;
     }
-    if (error.empty()) error = "not an image OpenImageIO can read";
-    return false;
+    const uint64_t pixels = uint64_t(std::max(header.width, 0)) *
+                            uint64_t(std::max(header.height, 0)) * uint64_t(header.depth);
+    if (pixels > kMaxTexturePixels) {
+        error = "image is " + std::to_string(header.width) + "x" + std::to_string(header.height) +
+                (header.depth > 1 ? "x" + std::to_string(header.depth) : std::string()) +
+                "; the limit is " + std::to_string(kMaxTexturePixels) + " pixels";
+        return false;
+    }
+    return true;
+}
+
+void check_texture_fits(const ImageSource& source, float max_memory_mb) {
+    const std::string name = cache_name(source, 0);
+    std::string error;
+    ImageHeader header;
+    if (!image_library().read_header(name, source.bytes, header, error)) {
+        throw InputError(source.name, "texture image cannot be read: " + error);
+    }
+    // A file without tiles is decoded whole by its reader (libpng's through OpenImageIO keeps
+    // the full image), outside the cache's limit: it must fit in that limit itself.
+    const double decoded = double(header.width) * header.height * header.depth * header.channels *
+                           header.bytes_per_channel;
+    const double limit = double(max_memory_mb) * 1024.0 * 1024.0;
+    if (!header.tiled && decoded > limit) {
+        std::ostringstream text;
+        text.precision(4);
+        text << "texture image is " << header.width << "x" << header.height << ", "
+             << header.channels << " channel(s): " << decoded / (1024.0 * 1024.0)
+             << " MB decoded, without tiles, above the texture cache's " << max_memory_mb
+             << " MB (--texture-cache, render.texture_cache_mb; docs/limits.md, \"Texture "
+                "images\"): raise the limit, or convert the image to a tiled, MIP-mapped file "
+                "(maketx), which is read tile by tile";
+        throw InputError(source.name, text.str());
+    }
+    if (!image_library().decodes(name, source.bytes, error)) {
+        throw InputError(source.name, "texture image does not decode: " + error);
+    }
 }
 
 struct ImageTextures::Impl {
@@ -102,6 +140,7 @@ struct ImageTextures::Impl {
     size_t add(const std::shared_ptr<const ImageSource>& source) {
         const auto found = index_of.find(source.get());
         if (found != index_of.end()) return found->second;
+        check_texture_fits(*source, limit_mb);
         Entry entry;
         entry.source = source;
         entry.handle = system->add(cache_name(*source, entries.size()), source->bytes);
@@ -134,8 +173,8 @@ ImageTextures::ImageTextures(const std::vector<Material>& materials, float max_m
     // A private system: its cache limit and statistics are this render's. PNG and JPEG are
     // scanline images: cut into 64² tiles so that the memory limit bounds what is held, with
     // their MIP levels built in the cache (filtered minification).
-    impl.system = image_library().create_texture_cache(max_memory_mb, /*autotile=*/64);
     impl.limit_mb = max_memory_mb;
+    impl.system = image_library().create_texture_cache(max_memory_mb, /*autotile=*/64);
     impl.uses.resize(materials.size());
     for (size_t m = 0; m < materials.size(); ++m) {
         const MaterialImages& images = materials[m].images;

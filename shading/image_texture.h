@@ -33,7 +33,8 @@ struct ImageTextureStats {
 class ImageTextures {
   public:
     // Registers the images of `materials` (indexed as the scene's material ids) in a new
-    // TextureSystem whose cache holds at most `max_memory_mb` of decoded tiles.
+    // TextureSystem whose cache holds at most `max_memory_mb` of decoded tiles, each image
+    // checked first (check_texture_fits: throws InputError).
     ImageTextures(const std::vector<Material>& materials, float max_memory_mb);
     ~ImageTextures();
     ImageTextures(const ImageTextures&) = delete;
@@ -67,9 +68,15 @@ class ImageTextures {
     std::unique_ptr<Impl> m_impl;
 };
 
-// Checks that `source` decodes as an image (OpenImageIO reads its header from memory); false
-// with OpenImageIO's reason in `error` otherwise.
+// Checks that `source`'s header reads as an image of at most kMaxTexturePixels (OpenImageIO
+// reads it from memory; no pixel is decoded); false with the reason in `error` otherwise.
 bool image_source_readable(const ImageSource& source, std::string& error);
+// What the render checks before it registers an image (the ImageTextures constructor): that an
+// image without tiles fits the texture cache's limit decoded (its reader holds it whole; a
+// 30000 × 30000 PNG took 1.44 GB under the default 256 MB), and that every pixel decodes (a
+// truncated PNG used to shade with what libpng had made of it). Throws InputError naming the
+// image's file otherwise.
+void check_texture_fits(const ImageSource& source, float max_memory_mb);
 // The most pixels a texture image may declare, checked from its header before it is decoded: a
 // 370-byte PNG declaring 100000 × 100000 took 24 GB (docs/limits.md, "Texture images"). 2^28,
 // the height fields' sample limit: 16384 × 16384.

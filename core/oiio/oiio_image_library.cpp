@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/image_library.h"
 
@@ -172,6 +173,18 @@ class OiioTextureCache : public TextureCache {
     std::vector<std::unique_ptr<OIIO::Filesystem::IOMemReader>> m_proxies;
 };
 
+// `bytes` opened as an image through an in-memory proxy (which must outlive the input).
+std::unique_ptr<OIIO::ImageInput> open_memory(const std::string& name,
+                                              OIIO::Filesystem::IOMemReader& memory,
+                                              std::string& error) {
+    OIIO::ImageSpec config;
+    void* proxy = &memory;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    auto input = OIIO::ImageInput::open(name, &config);
+    if (!input) error = OIIO::geterror();
+    return input;
+}
+
 class OiioImageLibrary : public ImageLibrary {
   public:
     std::unique_ptr<ImageWriter> create_writer(const std::string& path, const ImageFileSpec& spec,
@@ -209,29 +222,54 @@ class OiioImageLibrary : public ImageLibrary {
         return std::make_unique<OiioReader>(std::move(input), std::move(memory));
     }
 
-    bool readable(const std::string& name, const std::string& bytes, std::string& error,
-                  uint64_t max_pixels) const override {
+    bool read_header(const std::string& name, const std::string& bytes, ImageHeader& header,
+                     std::string& error) const override {
         OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
-        OIIO::ImageSpec config;
-        void* proxy = &memory;
-        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-        auto input = OIIO::ImageInput::open(name, &config);
-        if (!input) {
-            error = OIIO::geterror();
-            return false;
-        }
+        std::unique_ptr<OIIO::ImageInput> input = open_memory(name, memory, error);
+        if (!input) return false;
         const OIIO::ImageSpec& spec = input->spec();
-        const uint64_t pixels = uint64_t(std::max(spec.width, 0)) *
-                                uint64_t(std::max(spec.height, 0)) *
-                                uint64_t(std::max(spec.depth, 1));
+        header.width = spec.width;
+        header.height = spec.height;
+        header.depth = std::max(spec.depth, 1);
+        header.channels = spec.nchannels;
+        header.bytes_per_channel = static_cast<int>(spec.format.basesize());
+        header.tiled = spec.tile_width > 0;
+        header.mipmapped = input->seek_subimage(0, 1);
         input->close();
-        if (pixels > max_pixels) {
-            error = "image is " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                    (spec.depth > 1 ? "x" + std::to_string(spec.depth) : std::string()) +
-                    "; the limit is " + std::to_string(max_pixels) + " pixels";
-            return false;
-        }
         return true;
+    }
+
+    bool decodes(const std::string& name, const std::string& bytes,
+                 std::string& error) const override {
+        OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+        std::unique_ptr<OIIO::ImageInput> input = open_memory(name, memory, error);
+        if (!input) return false;
+        const OIIO::ImageSpec spec = input->spec();
+        // Rows of whole tiles (or scanlines) up to about 16 MB of native pixels at a time.
+        const size_t row_bytes = std::max<size_t>(spec.scanline_bytes(true), 1);
+        const int step = spec.tile_height > 0 ? spec.tile_height : 1;
+        const int rows = std::max(step, static_cast<int>((size_t(16) << 20) / row_bytes) / step *
+                                            step);
+        std::vector<unsigned char> chunk;
+        bool ok = true;
+        for (int z = spec.z; ok && z < spec.z + std::max(spec.depth, 1); ++z) {
+            for (int y = spec.y; ok && y < spec.y + spec.height; y += rows) {
+                const int end = std::min(y + rows, spec.y + spec.height);
+                chunk.resize(row_bytes * size_t(end - y));
+                ok = spec.tile_width > 0
+                         ? input->read_tiles(0, 0, spec.x, spec.x + spec.width, y, end, z, z + 1,
+                                             0, spec.nchannels, OIIO::TypeUnknown, chunk.data())
+                         : input->read_scanlines(0, 0, y, end, z, 0, spec.nchannels,
+                                                 OIIO::TypeUnknown, chunk.data());
+            }
+        }
+        // Some readers (libpng's through OpenImageIO) report a broken stream as an error message
+        // while returning the pixels they could make.
+        const std::string message = input->geterror();
+        input->close();
+        if (ok && message.empty()) return true;
+        error = message.empty() ? "the image does not decode" : message;
+        return false;
     }
 
     std::unique_ptr<TextureCache> create_texture_cache(float max_memory_mb,

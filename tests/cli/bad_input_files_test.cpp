@@ -255,6 +255,39 @@ TEST_F(BadInputFiles, ScenesBeyondTheTriangleRangeAreRefusedAndFarSmallObjectsWa
     EXPECT_TRUE(fs::exists(m_dir / "far.png"));
 }
 
+// Texture images the render refuses (issue "Robustness, round three", items 2 and 8): a PNG cut
+// in half (its header whole: the load accepted it, and the sphere shaded with what libpng had
+// decoded, exit 0), and an image without tiles larger decoded than --texture-cache (its reader
+// holds it whole, outside the cache: 1.44 GB for a 30000 × 30000 PNG under the default 256 MB).
+// The images are the built-in scene rendered by rayo itself.
+TEST_F(BadInputFiles, TexturesThatDoNotDecodeOrFitTheCacheAreRefused) {
+    ASSERT_EQ(run_watched({"render", "--width", "256", "--height", "256", "-o", "whole.png"}, 60)
+                  .exit_code,
+              0);
+    ASSERT_EQ(run_watched({"render", "--width", "1024", "--height", "1024", "-o", "big.png"}, 60)
+                  .exit_code,
+              0);
+    const std::string whole = read("whole.png");
+    write("half.png", whole.substr(0, whole.size() / 2));
+    auto textured = [](const std::string& image) {
+        return std::string(R"({"rayo": 1, )") + kCamera +
+               R"(, "materials": {"m": {"kd": {"image": ")" + image +
+               R"("}}}, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1,
+                   "material": "m"}]})";
+    };
+    write("half.json", textured("half.png"));
+    write("big.json", textured("big.png"));
+    expect_refused({"render", "half.json", "-o", "x.png"}, "half.png",
+                   "texture image does not decode: ", "truncated PNG");
+    expect_refused({"render", "big.json", "--texture-cache", "1", "-o", "x.exr"}, "big.png",
+                   "texture image is 1024x1024, 4 channel(s): 4 MB decoded, without tiles, above "
+                   "the texture cache's 1 MB",
+                   "untiled texture above the cache");
+    const WatchedResult fits =
+        run_watched({"render", "big.json", "--texture-cache", "8", "-o", "fits.png"}, 60);
+    EXPECT_EQ(fits.exit_code, 0) << fits.output;
+}
+
 // A write that fails (here: beyond the file-size limit, EFBIG) names the output the user gave,
 // not the temporary file, and gives the system's reason; nothing is left behind.
 TEST_F(BadInputFiles, WriteErrorsNameTheOutputAndTheReason) {

@@ -154,6 +154,14 @@ class CliFixture : public ::testing::Test {
         return p;
     }
 
+    // The bytes of a file in the folder (empty when it cannot be read).
+    std::string read(const std::string& name) const {
+        std::ifstream in(m_dir / name, std::ios::binary);
+        std::stringstream bytes;
+        bytes << in.rdbuf();
+        return bytes.str();
+    }
+
     // Every file and folder below the test's folder, relative to it.
     std::set<std::string> listing() const {
         std::set<std::string> names;
