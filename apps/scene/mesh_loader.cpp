@@ -802,15 +802,25 @@ std::vector<uint32_t> read_indices(const tinygltf::Model& model, int accessor,
     return out;
 }
 
-glm::dmat4 node_local_transform(const tinygltf::Node& node) {
+// The node's matrix, or T * R * S from its translation, rotation and scale. The rotation must be
+// a unit quaternion (glTF 2.0 §5.25); one within 1e-3 of unit length is normalised (exporters
+// round), anything else is refused with the node (a zero quaternion cast to the identity).
+glm::dmat4 node_local_transform(const tinygltf::Node& node, int index, const std::string& path) {
     if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major
     glm::dmat4 t(1.0), r(1.0), s(1.0);
     if (node.translation.size() == 3) {
         t[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
     }
     if (node.rotation.size() == 4) {  // glTF quaternions are (x, y, z, w)
-        r = glm::mat4_cast(
-            glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));
+        const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+        const double length = glm::length(q);
+        if (!(std::abs(length - 1.0) <= 1e-3)) {
+            std::ostringstream text;
+            text << "node " << index << ": rotation (" << q.x << ", " << q.y << ", " << q.z
+                 << ", " << q.w << ") is not a unit quaternion (length " << length << ")";
+            throw InputError(path, text.str());
+        }
+        r = glm::mat4_cast(q / length);
     }
     if (node.scale.size() == 3) {
         s = glm::scale(glm::dmat4(1.0), glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
@@ -1030,7 +1040,7 @@ struct GltfBuilder {
             throw InputError(path, "node " + std::to_string(node_index) + " is its own ancestor");
         }
         const tinygltf::Node& node = model.nodes[static_cast<size_t>(node_index)];
-        const glm::dmat4 world = parent * node_local_transform(node);
+        const glm::dmat4 world = parent * node_local_transform(node, node_index, path);
         if (nodes) collect_gltf_node_items(model, node, node_index, world, path, *nodes);
         if (node.mesh >= 0) {
             if (static_cast<size_t>(node.mesh) >= model.meshes.size()) {

@@ -1,7 +1,7 @@
 // glTF files built to break the reader ("Robustness, round three"): an image whose bufferView
 // starts or ends past its buffer (a segmentation fault and a heap over-read before), a node chain
 // deeper than the stack allows (a segmentation fault before), and a byteStride smaller than the
-// element it strides over (accepted before). Each is refused with the file and the reason.
+// element it strides over and a rotation that is no unit quaternion (accepted before). Each is refused with the file and the reason.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -95,6 +95,28 @@ TEST(GltfRobustness, AStrideShorterThanItsElementIsRefused) {
     EXPECT_NE(message.find("byteStride 4 (expected a multiple of 4 in [4, 252], at least the 12"),
               std::string::npos)
         << message;
+}
+
+// A rotation must be a unit quaternion (glTF 2.0): a zero one cast to the identity and was
+// accepted. Within 1e-3 of unit length (exporters round) it is normalised.
+TEST(GltfRobustness, ARotationThatIsNotAUnitQuaternionIsRefused) {
+    TempDir dir;
+    for (const double w : {0.0, 2.0, 1.0005}) {
+        GltfTestWriter g;
+        add_triangle(g);
+        g.doc()["nodes"][0]["rotation"] = {0.0, 0.0, 0.0, w};
+        const std::string name = "rotation" + std::to_string(int(w * 10000)) + ".gltf";
+        const std::string message = refusal(g.write_embedded(dir, name));
+        if (w == 1.0005) {
+            EXPECT_EQ(message, "accepted");
+        } else {
+            EXPECT_NE(message.find(name + ": node 0: rotation (0, 0, 0, " +
+                                   (w == 0.0 ? std::string("0") : std::string("2")) +
+                                   ") is not a unit quaternion"),
+                      std::string::npos)
+                << message;
+        }
+    }
 }
 
 }  // namespace
