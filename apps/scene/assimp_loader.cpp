@@ -12,6 +12,7 @@
 #include "core/math.h"
 #include "core/path_util.h"
 #include "core/scene_limits.h"
+#include "core/shapes/polygon_triangulation.h"
 
 namespace rayo {
 namespace {
@@ -112,6 +113,10 @@ bool check_face_indices(const aiScene& scene, const std::string& path) {
         for (unsigned int f = 0; f < mesh.mNumFaces; ++f) {
             const aiFace& face = mesh.mFaces[f];
             any_polygon |= face.mNumIndices >= 3;
+            if (face.mNumIndices > kMaxPolygonVertices) {
+                throw InputError(path, "face " + std::to_string(f) + ": " +
+                                           polygon_vertex_limit_text(face.mNumIndices));
+            }
             for (unsigned int k = 0; k < face.mNumIndices; ++k) {
                 if (face.mIndices[k] >= mesh.mNumVertices) {
                     throw InputError(path, "face " + std::to_string(f) + ": vertex index " +

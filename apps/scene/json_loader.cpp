@@ -21,6 +21,7 @@
 #include "core/path_util.h"
 #include "core/scene_limits.h"
 #include "core/shapes/mesh_form.h"
+#include "core/shapes/polygon_triangulation.h"
 #include "shading/texture.h"
 
 namespace rayo {
@@ -1540,6 +1541,9 @@ void SceneParser::parse_object(const Json& value, const std::string& pointer, Sc
             fail(vertices_pointer, std::string("expected an array of ") +
                                        (triangle ? "3" : "at least 3") +
                                        " vertices [x, y, z], got " + describe(vertices));
+        }
+        if (vertices.size() > kMaxPolygonVertices) {
+            fail(vertices_pointer, polygon_vertex_limit_text(vertices.size()));
         }
         std::vector<Vec3> points, normals;
         for (size_t i = 0; i < vertices.size(); ++i) {

@@ -35,6 +35,7 @@
 #include "core/scene.h"
 #include "core/scene_limits.h"
 #include "core/shapes/mesh_tangents.h"
+#include "core/shapes/polygon_triangulation.h"
 #include "shading/metallic_roughness.h"
 
 namespace rayo {
@@ -237,6 +238,7 @@ void check_obj_text(const std::string& obj_text, const std::string& path) {
             if (tokens.size() < 3) {
                 fail("a face needs at least 3 vertices, got " + std::to_string(tokens.size()));
             }
+            if (tokens.size() > kMaxPolygonVertices) fail(polygon_vertex_limit_text(tokens.size()));
             for (const std::string& t : tokens) check_corner(t);
         }
         if (tag == "v") ++vertices;

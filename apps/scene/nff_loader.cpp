@@ -19,6 +19,7 @@
 #include "core/camera.h"
 #include "core/error.h"
 #include "core/scene_limits.h"
+#include "core/shapes/polygon_triangulation.h"
 
 namespace rayo {
 namespace {
@@ -519,6 +520,9 @@ class NffParser {
         if (count < 3) {
             throw InputError(where,
                              "polygon needs at least 3 vertices, got " + std::to_string(count));
+        }
+        if (static_cast<unsigned long long>(count) > kMaxPolygonVertices) {
+            throw InputError(where, polygon_vertex_limit_text(static_cast<size_t>(count)));
         }
         m_vertices.clear();
         m_normals.clear();

@@ -190,6 +190,12 @@ class EarClipper {
 
 }  // namespace
 
+std::string polygon_vertex_limit_text(size_t count) {
+    return "polygon of " + std::to_string(count) + " vertices; the limit is " +
+           std::to_string(kMaxPolygonVertices) +
+           " (triangulation takes time quadratic in the count)";
+}
+
 DVec3 newell_normal(const std::vector<Vec3>& vertices) {
     // Newell's method (Sutherland, Sproull & Schumacker 1974): the sum of the edges' cross
     // products, taken relative to vertex 0 so that far-away polygons keep their precision.

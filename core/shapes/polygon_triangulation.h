@@ -4,13 +4,22 @@
 // gears are 144-vertex concave outlines), so a fan around the first vertex is not enough.
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/math.h"
 
 namespace rayo {
 
-using PolygonTriangle = std::array<uint32_t, 3>;  // indices into the polygon's vertices
+using PolygonTriangle = std::array<uint32_t, 3>;
+
+// The most vertices a polygon (an NFF `p`, a JSON polygon, a face of an OBJ, PLY or OFF mesh)
+// may have: ear clipping, rayo's and the mesh libraries' alike, takes time quadratic in the
+// count (one face of 10^5 vertices ran past 20 s, 3·10^4 took 6.1 s; docs/limits.md, "Input
+// files"). Real polygons have a few hundred at most (the SPD gears 144).
+constexpr size_t kMaxPolygonVertices = 4096;
+// "a polygon may have at most 4096 vertices", for the loaders' messages.
+std::string polygon_vertex_limit_text(size_t count);  // indices into the polygon's vertices
 
 // Newell's normal of a polygon: twice its vector area, pointing to the side from which the
 // vertices run counter-clockwise (right-handed). Zero for a polygon that encloses no area.

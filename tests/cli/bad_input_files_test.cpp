@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -286,6 +287,46 @@ TEST_F(BadInputFiles, TexturesThatDoNotDecodeOrFitTheCacheAreRefused) {
     const WatchedResult fits =
         run_watched({"render", "big.json", "--texture-cache", "8", "-o", "fits.png"}, 60);
     EXPECT_EQ(fits.exit_code, 0) << fits.output;
+}
+
+// Polygons of more than kMaxPolygonVertices (4096) vertices: ear clipping is quadratic, and one
+// face of 10^5 vertices ran past 20 s (issue "Robustness, round three", item 9). Refused at the
+// face in every format; one of 4096 still loads.
+TEST_F(BadInputFiles, PolygonsAboveTheVertexLimitAreRefusedAtTheirFace) {
+    auto outline = [](int n, const std::string& format) {
+        std::string text;
+        for (int i = 0; i < n; ++i) {
+            const double a = 6.283185307179586 * i / n, r = i % 2 ? 1.3 : 1.0;
+            const std::string xyz =
+                std::to_string(r * std::cos(a)) + " " + std::to_string(r * std::sin(a)) + " 0";
+            text += (format == "obj" ? "v " : "") + xyz + "\n";
+        }
+        return text;
+    };
+    for (const int n : {4097, 4096}) {
+        const std::string tag = std::to_string(n);
+        std::string obj = outline(n, "obj") + "f";
+        for (int i = 1; i <= n; ++i) obj += " " + std::to_string(i);
+        write("face" + tag + ".obj", obj + "\n");
+        std::string ply = "ply\nformat ascii 1.0\nelement vertex " + tag +
+                          "\nproperty float x\nproperty float y\nproperty float z\nelement "
+                          "face 1\nproperty list uint int vertex_indices\nend_header\n" +
+                          outline(n, "ply") + tag;
+        for (int i = 0; i < n; ++i) ply += " " + std::to_string(i);
+        write("face" + tag + ".ply", ply + "\n");
+        write("face" + tag + ".nff", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n"
+                                     "resolution 16 16\nl 1 1 5\nf 1 1 1 1 0 0 0 1\np " +
+                                         tag + "\n" + outline(n, "nff"));
+    }
+    const std::string reason =
+        "polygon of 4097 vertices; the limit is 4096 (triangulation takes time quadratic";
+    expect_refused({"info", "face4097.obj"}, "face4097.obj:4098", reason, "OBJ face");
+    expect_refused({"info", "face4097.ply"}, "face4097.ply", "face 0: " + reason, "PLY face");
+    expect_refused({"info", "face4097.nff"}, "face4097.nff:10", reason, "NFF polygon");
+    for (const char* ok : {"face4096.obj", "face4096.ply", "face4096.nff"}) {
+        const WatchedResult r = run_watched({"info", ok}, kSecondsLimit);
+        EXPECT_EQ(r.exit_code, 0) << ok << "\n" << r.output;
+    }
 }
 
 // A write that fails (here: beyond the file-size limit, EFBIG) names the output the user gave,
