@@ -482,7 +482,10 @@ void apply_overrides(const RenderArgs& args, SceneDescription& d) {
     if (args.environment) {
         // In place of the scene's environment, or added.
         EnvironmentLight environment;
-        environment.map = read_environment_image(*args.environment, "--environment", {});
+        FileAccess logged;
+        logged.keep_log();
+        environment.map = read_environment_image(*args.environment, "--environment", logged);
+        for (InputFileRecord& r : logged.log()) d.input_files.push_back(std::move(r));
         if (d.shading.environment >= 0) {
             d.shading.lights[size_t(d.shading.environment)] = environment;
         } else {
@@ -588,6 +591,12 @@ RenderFingerprint render_fingerprint(const RenderArgs& args, const SceneDescript
     };
     // The declared settings (spp, antialiasing, the integrator and its own, ...).
     for (auto& entry : describe_settings(s)) entries.push_back(std::move(entry));
+    // Every file the scene referenced (meshes, textures, images, ...), by size and modification
+    // time: a resume after one changed would mix the old and the new in one image.
+    for (const InputFileRecord& file : d.input_files) {
+        entries.push_back({"file " + file.path, std::to_string(file.bytes) + " bytes, modified " +
+                                                     std::to_string(file.modified_ns) + " ns"});
+    }
     return entries;
 }
 

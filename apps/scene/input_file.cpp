@@ -71,6 +71,22 @@ void FileAccess::check(const std::string& path, const std::string& where) const 
                                 "' (--restrict-paths)");
 }
 
+void FileAccess::keep_log() {
+    if (!m_log) m_log = std::make_shared<std::vector<InputFileRecord>>();
+}
+
+void FileAccess::record(const std::string& path, uint64_t bytes, int64_t modified_ns) const {
+    if (!m_log) return;
+    for (const InputFileRecord& r : *m_log) {
+        if (r.path == path) return;
+    }
+    m_log->push_back({path, bytes, modified_ns});
+}
+
+std::vector<InputFileRecord> FileAccess::log() const {
+    return m_log ? *m_log : std::vector<InputFileRecord>{};
+}
+
 void require_input_file(const std::string& path, const std::string& where, const std::string& what,
                         uint64_t max_bytes, const FileAccess& access) {
     access.check(path, where);
@@ -99,6 +115,8 @@ std::string read_input_file(const std::string& path, const std::string& where,
         throw InputError(where, "cannot open " + quoted(what, path) + ": " + std::strerror(errno));
     }
     check_kind_and_size(info, path, where, what, max_bytes);
+    access.record(path, static_cast<uint64_t>(info.st_size),
+                  int64_t(info.st_mtim.tv_sec) * 1000000000 + info.st_mtim.tv_nsec);
 
     // The size fstat gave, then whatever the file grew by since, in small chunks up to the limit
     // (no speculative buffer: under ASan a 1 MiB spare per file made the OBJ fuzzer 500x slower).

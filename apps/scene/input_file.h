@@ -5,7 +5,9 @@
 // size checked against a per-kind limit before reading, and, for scenes from untrusted sources,
 // confined to the scene's directory tree (docs/limits.md, "Trust model").
 #include <cstdint>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace rayo {
 
@@ -15,6 +17,14 @@ constexpr uint64_t kMaxSceneFileBytes = uint64_t(1) << 31;     // NFF and JSON s
 constexpr uint64_t kMaxMeshFileBytes = uint64_t(1) << 31;      // OBJ, glTF, .bin buffers: 2 GiB
 constexpr uint64_t kMaxMaterialFileBytes = uint64_t(1) << 26;  // .mtl libraries: 64 MiB
 constexpr uint64_t kMaxVoxelFileBytes = uint64_t(1) << 30;     // raw voxel files: 1 GiB
+
+// A file a scene read, as it was then: the resume fingerprint covers these (a texture replaced
+// between an interrupted render and its --resume gave an image half old, half new).
+struct InputFileRecord {
+    std::string path;
+    uint64_t bytes = 0;
+    int64_t modified_ns = 0;  // st_mtim, nanoseconds since the epoch
+};
 
 // Which files a scene may reference. By default any readable regular file (relative names
 // resolve against the scene's directory; ".." and absolute paths are allowed, as users expect).
@@ -33,8 +43,15 @@ class FileAccess {
     // root. A path that does not exist is left to the open that follows (its own message).
     void check(const std::string& path, const std::string& where) const;
 
+    // From now on, every file read_input_file reads through this access (or a copy of it) is
+    // recorded, once per path, in the order read.
+    void keep_log();
+    void record(const std::string& path, uint64_t bytes, int64_t modified_ns) const;
+    std::vector<InputFileRecord> log() const;
+
   private:
     std::string m_root;  // canonical directory, no trailing slash; empty: not confined
+    std::shared_ptr<std::vector<InputFileRecord>> m_log;  // shared by copies; null: no log
 };
 
 // Checks that `path` names a regular file no larger than `max_bytes` (following symbolic

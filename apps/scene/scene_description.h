@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "apps/scene/gltf_nodes.h"
+#include "apps/scene/input_file.h"
 #include "core/adaptive_aa.h"
 #include "core/scene.h"
 #include "core/setting.h"
@@ -104,6 +105,8 @@ struct SceneDescription {
     // Input that was dropped rather than refused (e.g. zero-area patches of a tessellation),
     // each "where: what"; the CLI prints them. skipped_triangles counts the triangles they held.
     std::vector<std::string> warnings;
+    // The files the scene's file referenced, as read (load_scene_file; the resume fingerprint).
+    std::vector<InputFileRecord> input_files;
     size_t skipped_triangles = 0;
     // The "method" of top-level objects that name one (objects without stay analytic).
     std::vector<ShapeMethodRequest> shape_methods;

@@ -13,18 +13,12 @@ namespace rayo {
 
 namespace {
 
-SceneDescription load_by_format(const std::string& path, const SceneLoadOptions& options) {
+SceneDescription load_by_format(const std::string& path, const SceneLoadOptions& options,
+                                const FileAccess& access) {
     const std::string extension = lower_extension(path);
-    if (extension == ".json") {
-        return load_json_file(
-            path, options.restrict_paths ? FileAccess::confined_to_scene(path) : FileAccess());
-    }
+    if (extension == ".json") return load_json_file(path, access);
     if (extension == ".nff") return load_nff_file(path, nullptr, options.nff);
-    if (is_model_file(path)) {
-        return load_model_scene(
-            path, options.model,
-            options.restrict_paths ? FileAccess::confined_to_scene(path) : FileAccess());
-    }
+    if (is_model_file(path)) return load_model_scene(path, options.model, access);
     throw InputError(path, "unknown scene format '" + extension +
                                "': expected a .json (rayo) or .nff (Neutral File Format) scene, "
                                "or a model file (" +
@@ -34,7 +28,11 @@ SceneDescription load_by_format(const std::string& path, const SceneLoadOptions&
 }  // namespace
 
 SceneDescription load_scene_file(const std::string& path, const SceneLoadOptions& options) {
-    SceneDescription d = load_by_format(path, options);
+    FileAccess access =
+        options.restrict_paths ? FileAccess::confined_to_scene(path) : FileAccess();
+    access.keep_log();
+    SceneDescription d = load_by_format(path, options, access);
+    d.input_files = access.log();
     if (const size_t small = objects_below_float_resolution(d.scene)) {
         std::ostringstream text;
         text << small << " object(s) are smaller than " << kMinSizeToDistance

@@ -164,6 +164,29 @@ TEST_F(ResumeCli, ResumeRefusesOtherSettingsNamingThem) {
     EXPECT_EQ(listing(), kept);
 }
 
+// The files the scene references are in the fingerprint too (issue "Robustness, round three",
+// item 12): a texture replaced between the interruption and the resume gave an image half the
+// old texture, half the new (exit 0). Now the resume names the file and refuses.
+TEST_F(ResumeCli, ResumeRefusesAReferencedFileThatChanged) {
+    ASSERT_EQ(run("render --width 64 --height 64 -o tex.png").exit_code, 0);
+    write("scene.json", R"({"rayo": 1, "camera": {"eye": [0, 0, 3], "look_at": [0, 0, 0],
+        "vfov": 40, "width": 150, "height": 100},
+        "lights": [{"type": "point", "position": [2, 2, 3]}],
+        "materials": {"m": {"kd": {"image": "tex.png"}}},
+        "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]})");
+    const std::string render = "render scene.json -o out.exr --tile-size 16 --threads 1";
+    ASSERT_EQ(run(render + " --journal-after 0", "RAYO_TEST_INTERRUPT=4").exit_code, 130);
+    // Unchanged, the resume completes.
+    ASSERT_EQ(run(render + " --resume", "RAYO_TEST_INTERRUPT=8").exit_code, 130);
+    // Another texture under the same name.
+    ASSERT_EQ(run("render --width 32 --height 32 -o tex.png").exit_code, 0);
+    const CommandResult r = run(render + " --resume");
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("was made with other settings:"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("  file tex.png: "), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(m_dir / "out.exr"));
+}
+
 TEST_F(ResumeCli, ResumeWithoutAPartialRenderIsRefused) {
     write("scene.nff", kSceneNff);
     const CommandResult r = run("render scene.nff -o out.exr --resume");
