@@ -62,6 +62,17 @@ int64_t peak_cache_memory(const std::string& statistics) {
     return static_cast<int64_t>(value * scale);
 }
 
+// OpenImageIO's message with the cache's name of the image (cache_name) put back to the file's:
+// '/etc/passwd' gave 'Image "rayo-image-0" does not exist'.
+std::string with_file_name(std::string message, const std::string& cache,
+                           const ImageSource& source) {
+    for (size_t at = message.find(cache); at != std::string::npos;
+         at = message.find(cache, at + source.name.size())) {
+        message.replace(at, cache.size(), source.name);
+    }
+    return message;
+}
+
 }  // namespace
 
 float srgb_to_linear(float encoded) {
@@ -71,8 +82,14 @@ float srgb_to_linear(float encoded) {
 
 bool image_source_readable(const ImageSource& source, std::string& error) {
     ImageHeader header;
-    if (!image_library().read_header(cache_name(source, 0), source.bytes, header, error)) {
-        if (error.empty()) error = "not an image OpenImageIO can read";
+    const std::string name = cache_name(source, 0);
+    if (!image_library().read_header(name, source.bytes, header, error)) {
+        // Without a known signature or extension OpenImageIO looks for a file of the cache's
+        // name and says it "does not exist".
+        const bool named_format = name.find('.') != std::string::npos;
+        error = error.empty() || !named_format
+                    ? "not an image OpenImageIO can read (no reader recognizes its bytes)"
+                    : with_file_name(error, name, source);
         return false;
     }
     const uint64_t pixels = uint64_t(std::max(header.width, 0)) *
@@ -91,7 +108,8 @@ void check_texture_fits(const ImageSource& source, float max_memory_mb) {
     std::string error;
     ImageHeader header;
     if (!image_library().read_header(name, source.bytes, header, error)) {
-        throw InputError(source.name, "texture image cannot be read: " + error);
+        throw InputError(source.name,
+                         "texture image cannot be read: " + with_file_name(error, name, source));
     }
     // A file without tiles is decoded whole by its reader (libpng's through OpenImageIO keeps
     // the full image), outside the cache's limit: it must fit in that limit itself.
@@ -110,7 +128,8 @@ void check_texture_fits(const ImageSource& source, float max_memory_mb) {
         throw InputError(source.name, text.str());
     }
     if (!image_library().decodes(name, source.bytes, error)) {
-        throw InputError(source.name, "texture image does not decode: " + error);
+        throw InputError(source.name, "texture image does not decode: " +
+                                          with_file_name(error, name, source));
     }
 }
 

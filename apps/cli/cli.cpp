@@ -955,8 +955,10 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         const int done = partial->tiles_done();
         err << "rayo: interrupted: " << done << " of " << partial->tile_count() << " tiles done; "
             << (done > 0 ? "resume with --resume (the tiles are kept in " + partial->path() + ")"
-                         : std::string("nothing kept (tiles are kept from --journal-after "
-                                       "seconds into a render on)"))
+                         : std::string(args.journal_after_s && *args.journal_after_s == 0.0
+                                           ? "nothing kept (no tile had finished)"
+                                           : "nothing kept (tiles are kept from --journal-after "
+                                             "seconds into a render on)"))
             << "\n";
         return 128 + stop_signal();
     }

@@ -1121,6 +1121,9 @@ struct GltfTextures {
     const std::string& path;
     MeshImportStats* stats;
     std::map<int, std::shared_ptr<const ImageSource>> images;
+    // The files read_input_file refused while tinygltf loaded (path, reason): an image among
+    // them is named with its reason, not as "not found".
+    const std::vector<std::pair<std::string, std::string>>* refused = nullptr;
 
     void warn(const std::string& message) const {
         if (stats) stats->warnings.push_back(path + ": " + message);
@@ -1205,7 +1208,20 @@ struct GltfTextures {
                                            (image.name.empty() ? "" : " '" + image.name + "'");
         std::shared_ptr<const ImageSource> source;
         if (image.image.empty()) {
-            warn(what + ": image '" + name + "' not found or unreadable; shading with the factor");
+            std::string reason = "not found";
+            if (!image.uri.empty() && image.uri.front() == '/') {
+                reason += " (a glTF image's uri is relative to the file: an absolute path is "
+                          "looked for under the file's folder)";
+            }
+            for (size_t i = 0; refused && i < refused->size(); ++i) {
+                const auto& [file, why] = (*refused)[i];
+                if (file == name || (file.size() > image.uri.size() &&
+                                     file.compare(file.size() - image.uri.size(),
+                                                  image.uri.size(), image.uri) == 0)) {
+                    reason = why;
+                }
+            }
+            warn(what + ": image '" + name + "': " + reason + "; shading with the factor");
         } else {
             try {
                 source = texture_image_from_bytes(
@@ -1298,6 +1314,7 @@ struct GltfFiles {
     const std::string& gltf_path;  // the place named in messages
     const FileAccess& access;
     std::optional<InputError> refusal;  // the first read refused, reported if the load fails
+    std::vector<std::pair<std::string, std::string>> refused;  // every read refused: path, why
 };
 
 bool gltf_file_exists(const std::string& path, void*) {
@@ -1318,6 +1335,7 @@ bool gltf_read_file(std::vector<unsigned char>* out, std::string* err, const std
         return true;
     } catch (const InputError& e) {
         if (!files.refusal) files.refusal = e;
+        files.refused.emplace_back(path, e.message());
         if (err) *err = e.message();
         return false;
     }
@@ -1424,7 +1442,7 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
     decode_draco_primitives(model, path);
 
     std::vector<Material> converted;
-    GltfTextures textures{model, path, stats, {}};
+    GltfTextures textures{model, path, stats, {}, &files.refused};
     for (size_t i = 0; i < model.materials.size(); ++i) {
         converted.push_back(material_from_gltf(model.materials[i], i, path));
         attach_gltf_images(converted.back(), model.materials[i], textures);

@@ -4,7 +4,11 @@
 // element it strides over and a rotation that is no unit quaternion (accepted before). Each is refused with the file and the reason.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "apps/scene/mesh_loader.h"
 #include "apps/scene/model_scene.h"
@@ -117,6 +121,41 @@ TEST(GltfRobustness, ARotationThatIsNotAUnitQuaternionIsRefused) {
                 << message;
         }
     }
+}
+
+// An image the reader refused is named with its reason (issue 30 item 13): a link to /dev/zero
+// and an image outside the tree under --restrict-paths were all "not found or unreadable".
+TEST(GltfRobustness, AnImageThatCannotBeReadIsNamedWithItsReason) {
+    TempDir dir;
+    std::filesystem::create_symlink("/dev/zero", dir.file("zero.png"));
+    dir.write("../rayo_outside_" + std::to_string(::getpid()) + ".png", "x");
+    struct Case {
+        std::string uri, reason;
+        bool confined;
+    };
+    const std::vector<Case> cases = {
+        {"zero.png", "is a character device; expected a regular file", false},
+        {"../rayo_outside_" + std::to_string(::getpid()) + ".png", "outside the scene's directory",
+         true},
+        {"missing.png", "': not found; shading with the factor", false},
+        {"/missing.png", "not found (a glTF image's uri is relative to the file", false},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.uri);
+        GltfTestWriter g;
+        add_triangle(g);
+        g.push("images", {{"uri", c.uri}});
+        g.push("textures", {{"source", 0}});
+        g.push("materials", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+        g.doc()["meshes"][0]["primitives"][0]["material"] = 0;
+        const std::string path = g.write_embedded(dir, "image.gltf");
+        const SceneDescription d = load_model_scene(
+            path, ModelFraming{}, c.confined ? FileAccess::confined_to_scene(path) : FileAccess());
+        std::string warnings;
+        for (const std::string& w : d.warnings) warnings += w + "\n";
+        EXPECT_NE(warnings.find(c.reason), std::string::npos) << warnings;
+    }
+    std::filesystem::remove(dir.file("../rayo_outside_" + std::to_string(::getpid()) + ".png"));
 }
 
 }  // namespace

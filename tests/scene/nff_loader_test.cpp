@@ -568,7 +568,10 @@ TEST(NffLoaderErrors, BadPolygon) {
 TEST(NffLoaderErrors, TruncatedFile) {
     expect_error(kView + lines({"p 5", "0 0 0", "1 0 0", "1 1 0"}), "t.nff:8",
                  "polygon declares 5 vertices, the file ends after 3");
-    expect_error(kView + lines({"pp 1000000000"}), "t.nff:8", "truncated file");
+    expect_error(kView + lines({"pp 4000"}), "t.nff:8", "truncated file");
+    // A count beyond kMaxPolygonVertices is refused before any vertex is read.
+    expect_error(kView + lines({"pp 1000000000"}), "t.nff:8",
+                 "polygon of 1000000000 vertices; the limit is 4096");
     expect_error(lines({"# header", "v", "from 0 0 5", "at 0 0 0"}), "t.nff:2",
                  "missing up angle hither resolution");
     expect_error(

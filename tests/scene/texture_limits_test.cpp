@@ -72,5 +72,19 @@ TEST(TextureLimits, AnImageDeclaringMorePixelsThanTheLimitIsRefusedFromItsHeader
     EXPECT_EQ(refusal(dir, "at.png").find("the limit is"), std::string::npos);
 }
 
+// A file that is no image and has no image extension (issue 30 item 13: /etc/passwd as a texture
+// gave OpenImageIO's 'Image "rayo-image-0" does not exist').
+TEST(TextureLimits, AFileThatIsNoImageIsSaidToBeNone) {
+    rayo_test::TempDir dir;
+    dir.write("passwd", "root:x:0:0:root:/root:/bin/bash\n");
+    const std::string message = refusal(dir, "passwd");
+    EXPECT_NE(message.find("texture image '" + dir.file("passwd") +
+                           "' cannot be read: not an image OpenImageIO can read (no reader "
+                           "recognizes its bytes)"),
+              std::string::npos)
+        << message;
+    EXPECT_EQ(message.find("rayo-image"), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace rayo
