@@ -904,6 +904,14 @@ struct GltfBuilder {
         }
         TriangleMesh piece;
         piece.positions = read_vec3(model, position->second, path, what + " POSITION");
+        // The rule every other mesh reader applies (a vertex at 3e38 was dropped with its
+        // triangles and the file called "no (non-degenerate) triangles").
+        for (size_t v = 0; v < piece.positions.size(); ++v) {
+            if (!within_scene_magnitude(max_abs_component(piece.positions[v]))) {
+                throw InputError(path, what + " POSITION " + std::to_string(v) +
+                                           ": coordinates must be " + kSceneMagnitudeRule);
+            }
+        }
         const auto normal = primitive.attributes.find("NORMAL");
         if (normal != primitive.attributes.end()) {
             piece.normals = read_vec3(model, normal->second, path, what + " NORMAL");

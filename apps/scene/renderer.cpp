@@ -107,7 +107,7 @@ void check_triangle_range(const Scene& scene, bool spheres_as_triangles, const V
             "squared, here up to "
          << product << ", beyond the " << kMaxTriangleProduct
          << " a float holds with its sums (docs/limits.md, \"Scale\"; at unit distance from "
-            "the eye, triangles within about 2e12): scale the scene down or trace its shapes "
+            "the eye, triangles within about 2.9e12): scale the scene down or trace its shapes "
             "analytically";
     throw InputError(where, text.str());
 }

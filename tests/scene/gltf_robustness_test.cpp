@@ -13,6 +13,7 @@
 #include "apps/scene/mesh_loader.h"
 #include "apps/scene/model_scene.h"
 #include "core/error.h"
+#include "core/scene_limits.h"
 #include "tests/scene/gltf_test_writer.h"
 
 namespace rayo {
@@ -121,6 +122,19 @@ TEST(GltfRobustness, ARotationThatIsNotAUnitQuaternionIsRefused) {
                 << message;
         }
     }
+}
+
+// A vertex beyond the number rule is refused with the rule, as PLY, STL and OBJ do (issue 30
+// item 13: a vertex at 3e38 gave "no (non-degenerate) triangles").
+TEST(GltfRobustness, AVertexBeyondTheNumberRuleIsRefusedWithTheRule) {
+    TempDir dir;
+    GltfTestWriter g;
+    const int position = g.positions({0, 0, 0, 1, 0, 0, 0, 3e38f, 0});
+    g.node({{"mesh", g.mesh({{"attributes", {{"POSITION", position}}}})}});
+    const std::string message = refusal(g.write_embedded(dir, "far.gltf"));
+    EXPECT_NE(message.find("POSITION 2: coordinates must be " + std::string(kSceneMagnitudeRule)),
+              std::string::npos)
+        << message;
 }
 
 // An image the reader refused is named with its reason (issue 30 item 13): a link to /dev/zero
