@@ -19,16 +19,15 @@
 namespace rayo {
 namespace {
 
-// A 64×8 PNG: the left half byte `left`, the right half byte `right` (grey).
-std::shared_ptr<const ImageSource> halves(unsigned char left, unsigned char right) {
-    const int w = 64, h = 8;
-    std::vector<unsigned char> pixels(w * h);
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) pixels[y * w + x] = x < w / 2 ? left : right;
-    }
-    const std::string path = "/tmp/rayo_image_texture_test_" + std::to_string(::getpid()) + ".png";
+// Grey 8-bit `pixels` of `spec` encoded by OpenImageIO in the format of `name`'s extension
+// (through a file it removes), as the image source `name`.
+std::shared_ptr<const ImageSource> encoded(const OIIO::ImageSpec& spec,
+                                           const std::vector<unsigned char>& pixels,
+                                           const std::string& name) {
+    const std::string path = "/tmp/rayo_image_texture_test_" + std::to_string(::getpid()) + "_" +
+                             name;
     auto out = OIIO::ImageOutput::create(path);
-    EXPECT_TRUE(out && out->open(path, OIIO::ImageSpec(w, h, 1, OIIO::TypeDesc::UINT8)));
+    EXPECT_TRUE(out && out->open(path, spec));
     out->write_image(OIIO::TypeDesc::UINT8, pixels.data());
     out->close();
     std::ifstream file(path, std::ios::binary);
@@ -36,9 +35,19 @@ std::shared_ptr<const ImageSource> halves(unsigned char left, unsigned char righ
     bytes << file.rdbuf();
     std::remove(path.c_str());
     auto source = std::make_shared<ImageSource>();
-    source->name = "halves.png";
+    source->name = name;
     source->bytes = bytes.str();
     return source;
+}
+
+// A 64×8 PNG: the left half byte `left`, the right half byte `right` (grey).
+std::shared_ptr<const ImageSource> halves(unsigned char left, unsigned char right) {
+    const int w = 64, h = 8;
+    std::vector<unsigned char> pixels(w * h);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) pixels[y * w + x] = x < w / 2 ? left : right;
+    }
+    return encoded(OIIO::ImageSpec(w, h, 1, OIIO::TypeDesc::UINT8), pixels, "halves.png");
 }
 
 Material textured(const std::shared_ptr<const ImageSource>& image, TextureWrap wrap,
@@ -119,23 +128,9 @@ TEST(ImageTexture, UnreadableBytesAreReported) {
 // A w×h grey image of byte 100 written by OpenImageIO as `extension` (with `tile` > 0, tiled).
 std::shared_ptr<const ImageSource> grey_image(int w, int h, const std::string& extension,
                                               int tile = 0) {
-    const std::string path =
-        "/tmp/rayo_image_texture_test_" + std::to_string(::getpid()) + extension;
     OIIO::ImageSpec spec(w, h, 1, OIIO::TypeDesc::UINT8);
     if (tile > 0) spec.tile_width = spec.tile_height = tile;
-    const std::vector<unsigned char> pixels(size_t(w) * h, 100);
-    auto out = OIIO::ImageOutput::create(path);
-    EXPECT_TRUE(out && out->open(path, spec));
-    out->write_image(OIIO::TypeDesc::UINT8, pixels.data());
-    out->close();
-    std::ifstream file(path, std::ios::binary);
-    std::stringstream bytes;
-    bytes << file.rdbuf();
-    std::remove(path.c_str());
-    auto source = std::make_shared<ImageSource>();
-    source->name = "grey" + extension;
-    source->bytes = bytes.str();
-    return source;
+    return encoded(spec, std::vector<unsigned char>(size_t(w) * h, 100), "grey" + extension);
 }
 
 template <typename F>
