@@ -73,6 +73,27 @@ std::string with_file_name(std::string message, const std::string& cache,
     return message;
 }
 
+// Why a PNG's chunks do not reach its IEND within `bytes` (empty when they do, or when the bytes
+// are no PNG): said before the decoder reads past the end, where OpenImageIO's read callback
+// leaks its message as libpng unwinds (LeakSanitizer: PNGInput::PngReadCallback).
+std::string png_truncation(const std::string& bytes) {
+    if (bytes.size() < 8 || std::memcmp(bytes.data(), "\x89PNG\r\n\x1a\n", 8) != 0) return {};
+    size_t at = 8;
+    while (at + 8 <= bytes.size()) {
+        const auto byte = [&](size_t i) { return static_cast<uint32_t>(uint8_t(bytes[at + i])); };
+        const uint64_t length = (byte(0) << 24) | (byte(1) << 16) | (byte(2) << 8) | byte(3);
+        const std::string type = bytes.substr(at + 4, 4);
+        if (at + 12 + length > bytes.size()) {
+            return "truncated PNG: chunk " + type + " at byte " + std::to_string(at) + " runs " +
+                   "past the end of the file (" + std::to_string(bytes.size()) + " bytes)";
+        }
+        if (type == "IEND") return {};
+        at += 12 + length;
+    }
+    return "truncated PNG: the file (" + std::to_string(bytes.size()) +
+           " bytes) ends before its IEND chunk";
+}
+
 }  // namespace
 
 float srgb_to_linear(float encoded) {
@@ -126,6 +147,10 @@ void check_texture_fits(const ImageSource& source, float max_memory_mb) {
                 "images\"): raise the limit, or convert the image to a tiled, MIP-mapped file "
                 "(maketx), which is read tile by tile";
         throw InputError(source.name, text.str());
+    }
+    const std::string truncated = png_truncation(source.bytes);
+    if (!truncated.empty()) {
+        throw InputError(source.name, "texture image does not decode: " + truncated);
     }
     if (!image_library().decodes(name, source.bytes, error)) {
         throw InputError(source.name, "texture image does not decode: " +
