@@ -106,8 +106,8 @@ class Camera {
     Vec3 m_eye{0.0f};
     Vec3 m_view{0.0f}, m_right{0.0f}, m_up{0.0f};
     Vec3 m_origin_from_eye{0.0f};  // centre of pixel (0,0), seed 002 ORIGIN, minus EYE
-    Vec3 m_step_right{0.0f};  // hpixel·HORZ
-    Vec3 m_step_down{0.0f};   // vpixel·VERT
+    Vec3 m_step_right{0.0f};       // hpixel·HORZ
+    Vec3 m_step_down{0.0f};        // vpixel·VERT
     float m_hfov_degrees = 0.0f, m_vfov_degrees = 0.0f;
     float m_pixel_angle = 0.0f;
     bool m_pinhole = true;  // perspective without a lens: the inline path

@@ -45,15 +45,15 @@ float largest_triangle_coordinate(const Scene& scene, bool spheres_as_triangles)
     if (spheres_as_triangles) {
         for (const Sphere& s : scene.shapes.of<Sphere>()) {
             const Bounds3 b = s.bounds();
-            largest = glm::max(largest, glm::max(max_abs_component(b.lower),
-                                                 max_abs_component(b.upper)));
+            largest =
+                glm::max(largest, glm::max(max_abs_component(b.lower), max_abs_component(b.upper)));
         }
     }
     for (const Instance& instance : scene.instances) {
         for (const TriangleMesh& mesh : scene.groups[instance.group].meshes) {
             for (const Vec3& p : mesh.positions) {
-                largest = glm::max(largest,
-                                   max_abs_component(Vec3(instance.transform * glm::vec4(p, 1.0f))));
+                largest = glm::max(
+                    largest, max_abs_component(Vec3(instance.transform * glm::vec4(p, 1.0f))));
             }
         }
     }

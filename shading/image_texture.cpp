@@ -153,8 +153,8 @@ void check_texture_fits(const ImageSource& source, float max_memory_mb) {
         throw InputError(source.name, "texture image does not decode: " + truncated);
     }
     if (!image_library().decodes(name, source.bytes, error)) {
-        throw InputError(source.name, "texture image does not decode: " +
-                                          with_file_name(error, name, source));
+        throw InputError(source.name,
+                         "texture image does not decode: " + with_file_name(error, name, source));
     }
 }
 

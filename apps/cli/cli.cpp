@@ -595,7 +595,7 @@ RenderFingerprint render_fingerprint(const RenderArgs& args, const SceneDescript
     // time: a resume after one changed would mix the old and the new in one image.
     for (const InputFileRecord& file : d.input_files) {
         entries.push_back({"file " + file.path, std::to_string(file.bytes) + " bytes, modified " +
-                                                     std::to_string(file.modified_ns) + " ns"});
+                                                    std::to_string(file.modified_ns) + " ns"});
     }
     return entries;
 }

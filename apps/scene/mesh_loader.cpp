@@ -818,8 +818,8 @@ glm::dmat4 node_local_transform(const tinygltf::Node& node, int index, const std
         const double length = glm::length(q);
         if (!(std::abs(length - 1.0) <= 1e-3)) {
             std::ostringstream text;
-            text << "node " << index << ": rotation (" << q.x << ", " << q.y << ", " << q.z
-                 << ", " << q.w << ") is not a unit quaternion (length " << length << ")";
+            text << "node " << index << ": rotation (" << q.x << ", " << q.y << ", " << q.z << ", "
+                 << q.w << ") is not a unit quaternion (length " << length << ")";
             throw InputError(path, text.str());
         }
         r = glm::mat4_cast(q / length);
@@ -1218,14 +1218,15 @@ struct GltfTextures {
         if (image.image.empty()) {
             std::string reason = "not found";
             if (!image.uri.empty() && image.uri.front() == '/') {
-                reason += " (a glTF image's uri is relative to the file: an absolute path is "
-                          "looked for under the file's folder)";
+                reason +=
+                    " (a glTF image's uri is relative to the file: an absolute path is "
+                    "looked for under the file's folder)";
             }
             for (size_t i = 0; refused && i < refused->size(); ++i) {
                 const auto& [file, why] = (*refused)[i];
                 if (file == name || (file.size() > image.uri.size() &&
-                                     file.compare(file.size() - image.uri.size(),
-                                                  image.uri.size(), image.uri) == 0)) {
+                                     file.compare(file.size() - image.uri.size(), image.uri.size(),
+                                                  image.uri) == 0)) {
                     reason = why;
                 }
             }

@@ -28,8 +28,7 @@ SceneDescription load_by_format(const std::string& path, const SceneLoadOptions&
 }  // namespace
 
 SceneDescription load_scene_file(const std::string& path, const SceneLoadOptions& options) {
-    FileAccess access =
-        options.restrict_paths ? FileAccess::confined_to_scene(path) : FileAccess();
+    FileAccess access = options.restrict_paths ? FileAccess::confined_to_scene(path) : FileAccess();
     access.keep_log();
     SceneDescription d = load_by_format(path, options, access);
     d.input_files = access.log();

@@ -248,8 +248,8 @@ class OiioImageLibrary : public ImageLibrary {
         // Rows of whole tiles (or scanlines) up to about 16 MB of native pixels at a time.
         const size_t row_bytes = std::max<size_t>(spec.scanline_bytes(true), 1);
         const int step = spec.tile_height > 0 ? spec.tile_height : 1;
-        const int rows = std::max(step, static_cast<int>((size_t(16) << 20) / row_bytes) / step *
-                                            step);
+        const int rows =
+            std::max(step, static_cast<int>((size_t(16) << 20) / row_bytes) / step * step);
         std::vector<unsigned char> chunk;
         bool ok = true;
         for (int z = spec.z; ok && z < spec.z + std::max(spec.depth, 1); ++z) {
@@ -257,8 +257,8 @@ class OiioImageLibrary : public ImageLibrary {
                 const int end = std::min(y + rows, spec.y + spec.height);
                 chunk.resize(row_bytes * size_t(end - y));
                 ok = spec.tile_width > 0
-                         ? input->read_tiles(0, 0, spec.x, spec.x + spec.width, y, end, z, z + 1,
-                                             0, spec.nchannels, OIIO::TypeUnknown, chunk.data())
+                         ? input->read_tiles(0, 0, spec.x, spec.x + spec.width, y, end, z, z + 1, 0,
+                                             spec.nchannels, OIIO::TypeUnknown, chunk.data())
                          : input->read_scanlines(0, 0, y, end, z, 0, spec.nchannels,
                                                  OIIO::TypeUnknown, chunk.data());
             }

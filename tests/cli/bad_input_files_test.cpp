@@ -235,7 +235,8 @@ TEST_F(BadInputFiles, ObjIndexErrorsAreFoundBeforeTheWholeFileIsParsed) {
 // inside Embree (exit 134, "all(valid, ray.valid())"); now refused before the BVH, with why. A
 // unit sphere 2e7 from the origin renders, with a warning that float is coarse there.
 TEST_F(BadInputFiles, ScenesBeyondTheTriangleRangeAreRefusedAndFarSmallObjectsWarned) {
-    write("far_triangle.json", R"({"rayo": 1, "camera": {"eye": [0, 0, 1.2e13], "look_at": [0, 0, 0],
+    write("far_triangle.json",
+          R"({"rayo": 1, "camera": {"eye": [0, 0, 1.2e13], "look_at": [0, 0, 0],
         "vfov": 60, "width": 16, "height": 16},
         "lights": [{"type": "point", "position": [3e12, 6e12, 9e12]}],
         "objects": [{"type": "polygon", "vertices": [[-3e12, -3e12, 0], [3e12, -3e12, 0],
@@ -314,9 +315,10 @@ TEST_F(BadInputFiles, PolygonsAboveTheVertexLimitAreRefusedAtTheirFace) {
                           outline(n, "ply") + tag;
         for (int i = 0; i < n; ++i) ply += " " + std::to_string(i);
         write("face" + tag + ".ply", ply + "\n");
-        write("face" + tag + ".nff", "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n"
-                                     "resolution 16 16\nl 1 1 5\nf 1 1 1 1 0 0 0 1\np " +
-                                         tag + "\n" + outline(n, "nff"));
+        write("face" + tag + ".nff",
+              "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n"
+              "resolution 16 16\nl 1 1 5\nf 1 1 1 1 0 0 0 1\np " +
+                  tag + "\n" + outline(n, "nff"));
     }
     const std::string reason =
         "polygon of 4097 vertices; the limit is 4096 (triangulation takes time quadratic";

@@ -1,9 +1,9 @@
 // glTF files built to break the reader ("Robustness, round three"): an image whose bufferView
 // starts or ends past its buffer (a segmentation fault and a heap over-read before), a node chain
 // deeper than the stack allows (a segmentation fault before), and a byteStride smaller than the
-// element it strides over and a rotation that is no unit quaternion (accepted before). Each is refused with the file and the reason.
+// element it strides over and a rotation that is no unit quaternion (accepted before). Each is
+// refused with the file and the reason.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <filesystem>

@@ -24,8 +24,8 @@ namespace {
 std::shared_ptr<const ImageSource> encoded(const OIIO::ImageSpec& spec,
                                            const std::vector<unsigned char>& pixels,
                                            const std::string& name) {
-    const std::string path = "/tmp/rayo_image_texture_test_" + std::to_string(::getpid()) + "_" +
-                             name;
+    const std::string path =
+        "/tmp/rayo_image_texture_test_" + std::to_string(::getpid()) + "_" + name;
     auto out = OIIO::ImageOutput::create(path);
     EXPECT_TRUE(out && out->open(path, spec));
     out->write_image(OIIO::TypeDesc::UINT8, pixels.data());
