@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/cli/render_options.h"
 #include "apps/cli/setting_flags.h"
 #include "apps/cli/usage_error.h"
 #include "apps/mpi/mpi_tile_distribution.h"
@@ -101,73 +102,9 @@ const char* const kOcioNote =
     "The OCIO config is $OCIO when set, else rayo's own (sRGB display: sRGB, ACES 1.0 "
     "SDR-video, Raw).\n";
 
-const char* const kRenderHelp = R"(usage: rayo render [SCENE] [options]
-  render SCENE; the built-in scene without one
-
-render options:
-  -o, --output FILE        output image: .exr (linear float), .png, .tif, .jpg (display view)
-                           [default: SCENE's name with .png, or default.png]
-  --width W, --height H    resolution (one alone keeps the scene's aspect ratio)
-@--spp@
-  --threads N              worker threads [all cores]
-  --nff-light-intensity X  intensity of each NFF light without a colour, a number >= 0
-                           [1/sqrt(number of lights), the SPD's rule; 1 gives unit lights]
-  --view-dir X,Y,Z         model files: the direction from the model's centre to the eye
-                           [0.6,0.45,1: front, right, above; +y is up]
-  --no-ground              model files: no ground square under the model
-  --camera NAME|INDEX      glTF files: the camera to use, by name or by its index in `rayo
-                           info`'s list, or auto (the automatic framing) [the file's first
-                           camera, else auto; --view-dir alone chooses auto]
-  --auto-lights            model files: add the automatic key and fill lights even when the
-                           file has lights (KHR_lights_punctual) or emissive surfaces
-  --no-instances           glTF files: flatten meshes that several nodes use instead of
-                           keeping them once as instances
-  --environment FILE       an equirectangular image (HDR expected: .exr, .hdr) as the
-                           environment light, in place of the scene's; model files get no
-                           automatic lights with it (docs/path-tracing.md)
-  --restrict-paths         files the scene references (meshes, material libraries, glTF
-                           buffers) must lie in the scene's folder tree (untrusted scenes)
-@--tile-size@
-  --sphere-method M        auto (default), user, bruteforce, embree-point, mesh:N (N 0..7:
-                           20·4^N triangles per sphere)
-@--sphere-math@
-  --max-error-px E         auto's error budget in pixels [0.5]; the chord error of mesh
-                           shapes (--shape-method)
-  --shape-method M         analytic, mesh or auto: the method of every object with a mesh
-                           form (not spheres), over the scene's per-object "method"
-                           [each object's, default analytic; docs/shape-methods.md]
-  --flat-spheres           mesh:N spheres with flat facets instead of smooth normals
-  --single-rays            trace camera and shadow rays one by one instead of as coherent
-                           Embree streams per tile (same image; for comparisons)
-@--aa@
-@--aa-threshold@
-@--aa-depth@
-@--gi@
-  --gi-view V              radiosity: smooth (vertex colours, default) or patches (flat)
-  --gi-log FILE            radiosity: write the unshot energy after every shot (CSV)
-@--texture-cache@
-  --display D, --view V    OCIO display and view for PNG/TIFF/JPEG [config defaults]
-  --range R                clamp (default) or normalize (divide by the image maximum)
-  --half                   write EXR as half float
-  --exr-compression C      EXR compression: zip (default), none, rle, zips, piz (lossless);
-                           pxr24, b44, b44a, dwaa, dwab (lossy); docs/performance.md
-  --stream, --no-stream    write the file as tiles finish, in memory that does not grow with
-                           the image (tiled EXR; PNG/TIFF/JPEG rows in order), or hold the
-                           whole image and write it at the end [stream above 1024x1024;
-                           docs/high-resolution.md]
-  --resume                 continue the interrupted render of the same output: render only
-                           the tiles missing from OUTPUT.rayo-partial (same scene and settings;
-                           docs/high-resolution.md)
-  --no-journal             keep no OUTPUT.rayo-partial: Ctrl-C ends at once, not resumable
-  --journal-after S        keep tiles in OUTPUT.rayo-partial from S seconds into the render on:
-                           shorter renders write none, an interrupt loses at most S seconds of
-                           work; 0 keeps every tile [2]
-  --quiet                  no progress bar and no summary line
-  --stats                  print the full statistics table
-  --integrator NAME        the integrator, one of the list below [scene's, default whitted]
-
-@INTEGRATORS@
-)";
+// `rayo render --help`: written from the render's options (kRenderOptions, below) and the
+// declared settings.
+std::string render_help();
 
 const char* const kInfoHelp = R"(usage: rayo info SCENE
   load SCENE and print what it contains: resolution, field of view and view (eye, look_at,
@@ -233,18 +170,7 @@ std::string usage() {
 // `rayo COMMAND --help`: the command's usage and flags (the inputs too for commands that read a
 // scene); the texture kinds filled in from their one list (shading/texture.h).
 std::string command_help(const std::string& command) {
-    if (command == "render") {
-        // The declared settings' lines come from their declarations (apps/cli/setting_flags.h).
-        std::string text = kRenderHelp;
-        for (size_t at; (at = text.find("@--")) != std::string::npos;) {
-            const size_t end = text.find("@\n", at + 1);
-            std::string lines = setting_help(text.substr(at + 1, end - at - 1));
-            text.replace(at, end + 2 - at, lines);
-        }
-        const std::string slot = "@INTEGRATORS@\n";
-        text.replace(text.find(slot), slot.size(), integrators_help());
-        return text + "\n" + kInputs + kOcioNote;
-    }
+    if (command == "render") return render_help() + "\n" + kInputs + kOcioNote;
     if (command == "info") return std::string(kInfoHelp) + kInputs;
     if (command == "bench") return kBenchHelp;
     if (command == "preview") return std::string(kPreviewHelp) + kInputs + kOcioNote;
@@ -339,112 +265,278 @@ struct RenderArgs {
     bool stats = false;
 };
 
-RenderArgs parse_render_args(const std::vector<std::string>& args) {
+// One option of `rayo render` besides the declared settings (apps/cli/setting_flags.h): its
+// spelling, the name of its value (none: a switch), its help and what it does. `rayo render
+// --help` and parse_render_args both read this one list, in its order. An entry without `apply`
+// places a declared setting's help (from its declaration); one without `help` shares the
+// previous entry's line ("--width W, --height H").
+struct RenderOption {
+    const char* flag;
+    OptionUse use = OptionUse::Render;  // a declared setting's: Render
+    const char* value_name = nullptr;
+    const char* help = nullptr;
+    void (*apply)(RenderArgs&, const std::string& flag, const std::string& value) = nullptr;
+    const char* alias = nullptr;  // "-o"
+};
+
+// A choice between spellings for the options whose values are words.
+template <typename T>
+T word_choice(const std::string& flag, const std::string& text,
+              std::initializer_list<std::pair<const char*, T>> choices) {
+    std::string names;
+    for (const auto& [name, value] : choices) {
+        if (text == name) return value;
+        names += std::string(names.empty() ? "'" : "' or '") + name;
+    }
+    throw UsageError(flag + ": expected " + names + "', got '" + text + "'");
+}
+
+const RenderOption kRenderOptions[] = {
+    {"--output", OptionUse::Command, "FILE",
+     "output image: .exr (linear float), .png, .tif, .jpg (display view) [default: SCENE's name "
+     "with .png, or default.png]",
+     [](RenderArgs& r, const std::string&, const std::string& v) { r.output = v; }, "-o"},
+    {"--width", OptionUse::Render, "W", "resolution (one alone keeps the scene's aspect ratio)",
+     [](RenderArgs& r, const std::string& f, const std::string& v) {
+         r.width = parse_int(f, v, 1, kMaxImageSide);
+     }},
+    {"--height", OptionUse::Render, "H", nullptr,
+     [](RenderArgs& r, const std::string& f, const std::string& v) {
+         r.height = parse_int(f, v, 1, kMaxImageSide);
+     }},
+    {"--spp"},
+    {"--threads", OptionUse::Render, "N", "worker threads [all cores]",
+     [](RenderArgs& r, const std::string& f, const std::string& v) {
+         r.threads = parse_int(f, v, 1, 4096);
+     }},
+    {"--nff-light-intensity", OptionUse::Load, "X",
+     "intensity of each NFF light without a colour, a number >= 0 [1/sqrt(number of lights), the "
+     "SPD's rule; 1 gives unit lights]",
+     [](RenderArgs& r, const std::string& f, const std::string& v) {
+         r.load_options.nff.light_intensity = static_cast<float>(parse_number(f, v, 0.0, 1e30));
+     }},
+    {"--view-dir", OptionUse::Load, "X,Y,Z",
+     "model files: the direction from the model's centre to the eye [0.6,0.45,1: front, right, "
+     "above; +y is up]",
+     [](RenderArgs& r, const std::string& f, const std::string& v) {
+         r.load_options.model.view_direction = parse_direction(f, v);
+     }},
+    {"--no-ground", OptionUse::Load, nullptr, "model files: no ground square under the model",
+     [](RenderArgs& r, const std::string&, const std::string&) {
+         r.load_options.model.ground = false;
+     }},
+    {"--camera", OptionUse::Load, "NAME|INDEX",
+     "glTF files: the camera to use, by name or by its index in `rayo info`'s list, or auto (the "
+     "automatic framing) [the file's first camera, else auto; --view-dir alone chooses auto]",
+     [](RenderArgs& r, const std::string&, const std::string& v) {
+         r.load_options.model.camera = v;
+     }},
+    {"--auto-lights", OptionUse::Load, nullptr,
+     "model files: add the automatic key and fill lights even when the file has lights "
+     "(KHR_lights_punctual) or emissive surfaces",
+     [](RenderArgs& r, const std::string&, const std::string&) {
+         r.load_options.model.auto_lights = true;
+     }},
+    {"--no-instances", OptionUse::Load, nullptr,
+     "glTF files: flatten meshes that several nodes use instead of keeping them once as "
+     "instances",
+     [](RenderArgs& r, const std::string&, const std::string&) {
+         r.load_options.model.instances = false;
+     }},
+    {"--environment", OptionUse::Load, "FILE",
+     "an equirectangular image (HDR expected: .exr, .hdr) as the environment light, in place of "
+     "the scene's; model files get no automatic lights with it (docs/path-tracing.md)",
+     [](RenderArgs& r, const std::string&, const std::string& v) {
+         r.environment = v;
+         r.load_options.model.environment_lit = true;
+     }},
+    {"--restrict-paths", OptionUse::Load, nullptr,
+     "files the scene references (meshes, material libraries, glTF buffers) must lie in the "
+     "scene's folder tree (untrusted scenes)",
+     [](RenderArgs& r, const std::string&, const std::string&) {
+         r.load_options.restrict_paths = true;
+     }},
+    {"--tile-size"},
+    {"--sphere-method", OptionUse::Render, "M",
+     "auto (default), user, bruteforce, embree-point, mesh:N (N 0..7: 20·4^N triangles per "
+     "sphere)",
+     [](RenderArgs& r, const std::string& f, const std::string& v) {
+         r.sphere_method = parse_sphere_method(v);
+         if (!r.sphere_method) {
+             throw UsageError(f +
+                              ": expected auto, user, bruteforce, embree-point or mesh:N (N in "
+                              "0.." +
+                              std::to_string(kMaxMeshLevel) + "), got '" + v + "'");
+         }
+     }},
+    {"--sphere-math"},
+    {"--max-error-px", OptionUse::Render, "E",
+     "auto's error budget in pixels [0.5]; the chord error of mesh shapes (--shape-method)",
+     [](RenderArgs& r, const std::string& f, const std::string& v) {
+         r.max_error_px = static_cast<float>(parse_number(f, v, 1e-6, 1e6));
+     }},
+    {"--shape-method", OptionUse::Render, "M",
+     "analytic, mesh or auto: the method of every object with a mesh form (not spheres), over the "
+     "scene's per-object \"method\" [each object's, default analytic; docs/shape-methods.md]",
+     [](RenderArgs& r, const std::string& f, const std::string& v) {
+         r.shape_method = parse_shape_method(v);
+         if (!r.shape_method) {
+             throw UsageError(f + ": expected 'analytic', 'mesh' or 'auto', got '" + v + "'");
+         }
+     }},
+    {"--flat-spheres", OptionUse::Render, nullptr,
+     "mesh:N spheres with flat facets instead of smooth normals",
+     [](RenderArgs& r, const std::string&, const std::string&) { r.flat_spheres = true; }},
+    {"--single-rays", OptionUse::Render, nullptr,
+     "trace camera and shadow rays one by one instead of as coherent Embree streams per tile "
+     "(same image; for comparisons)",
+     [](RenderArgs& r, const std::string&, const std::string&) { r.single_rays = true; }},
+    {"--aa"},
+    {"--aa-threshold"},
+    {"--aa-depth"},
+    {"--gi"},
+    {"--gi-view", OptionUse::Render, "V",
+     "radiosity: smooth (vertex colours, default) or patches (flat)",
+     [](RenderArgs& r, const std::string& f, const std::string& v) {
+         r.gi_view_patches = word_choice<bool>(f, v, {{"smooth", false}, {"patches", true}});
+     }},
+    {"--gi-log", OptionUse::Command, "FILE",
+     "radiosity: write the unshot energy after every shot (CSV)",
+     [](RenderArgs& r, const std::string&, const std::string& v) { r.gi_log = v; }},
+    {"--texture-cache"},
+    {"--display", OptionUse::Output, "D",
+     "OCIO display and view for PNG/TIFF/JPEG [config defaults]",
+     [](RenderArgs& r, const std::string&, const std::string& v) { r.output_options.display = v; }},
+    {"--view", OptionUse::Output, "V", nullptr,
+     [](RenderArgs& r, const std::string&, const std::string& v) { r.output_options.view = v; }},
+    {"--range", OptionUse::Output, "R",
+     "clamp (default) or normalize (divide by the image maximum)",
+     [](RenderArgs& r, const std::string& f, const std::string& v) {
+         r.output_options.range = word_choice<RangeMode>(
+             f, v, {{"clamp", RangeMode::Clamp}, {"normalize", RangeMode::Normalize}});
+     }},
+    {"--half", OptionUse::Output, nullptr, "write EXR as half float",
+     [](RenderArgs& r, const std::string&, const std::string&) {
+         r.output_options.half_float_exr = true;
+     }},
+    {"--exr-compression", OptionUse::Output, "C",
+     "EXR compression: zip (default), none, rle, zips, piz (lossless); pxr24, b44, b44a, dwaa, "
+     "dwab (lossy); docs/performance.md",
+     [](RenderArgs& r, const std::string& f, const std::string& v) {
+         if (!is_exr_compression(v)) {
+             throw UsageError(f + ": expected one of " + exr_compression_names() + ", got '" + v +
+                              "'");
+         }
+         r.output_options.exr_compression = v;
+     }},
+    {"--stream", OptionUse::Command, nullptr,
+     "write the file as tiles finish, in memory that does not grow with the image (tiled EXR; "
+     "PNG/TIFF/JPEG rows in order), or hold the whole image and write it at the end [stream "
+     "above 1024x1024; docs/high-resolution.md]",
+     [](RenderArgs& r, const std::string&, const std::string&) { r.stream = StreamMode::Always; }},
+    {"--no-stream", OptionUse::Command, nullptr, nullptr,
+     [](RenderArgs& r, const std::string&, const std::string&) { r.stream = StreamMode::Never; }},
+    {"--resume", OptionUse::Command, nullptr,
+     "continue the interrupted render of the same output: render only the tiles missing from "
+     "OUTPUT.rayo-partial (same scene and settings; docs/high-resolution.md)",
+     [](RenderArgs& r, const std::string&, const std::string&) { r.resume = true; }},
+    {"--no-journal", OptionUse::Command, nullptr,
+     "keep no OUTPUT.rayo-partial: Ctrl-C ends at once, not resumable",
+     [](RenderArgs& r, const std::string&, const std::string&) { r.journal = false; }},
+    {"--journal-after", OptionUse::Command, "S",
+     "keep tiles in OUTPUT.rayo-partial from S seconds into the render on: shorter renders write "
+     "none, an interrupt loses at most S seconds of work; 0 keeps every tile [2]",
+     [](RenderArgs& r, const std::string& f, const std::string& v) {
+         r.journal_after_s = parse_number(f, v, 0.0, 1e6);
+     }},
+    {"--quiet", OptionUse::Command, nullptr, "no progress bar and no summary line",
+     [](RenderArgs& r, const std::string&, const std::string&) { r.quiet = true; }, "-q"},
+    {"--stats", OptionUse::Command, nullptr, "print the full statistics table",
+     [](RenderArgs& r, const std::string&, const std::string&) { r.stats = true; }},
+    {"--integrator", OptionUse::Render, "NAME",
+     "the integrator, one of the list below [scene's, default whitted]",
+     [](RenderArgs& r, const std::string&, const std::string& v) {
+         integrator_flag(v);
+         r.integrator = v;
+     }},
+};
+
+const RenderOption* render_option(const std::string& flag) {
+    for (const RenderOption& o : kRenderOptions) {
+        if (o.apply && (flag == o.flag || (o.alias && flag == o.alias))) return &o;
+    }
+    return nullptr;
+}
+
+std::string render_help() {
+    std::string out =
+        "usage: rayo render [SCENE] [options]\n  render SCENE; the built-in scene without "
+        "one\n\nrender options:\n";
+    std::set<std::string> placed;
+    const size_t count = std::size(kRenderOptions);
+    for (size_t i = 0; i < count; ++i) {
+        const RenderOption& o = kRenderOptions[i];
+        if (!o.apply) {
+            out += setting_help(o.flag);
+            placed.insert(o.flag);
+            continue;
+        }
+        // The entry and those that share its line: "-o, --output FILE", "--width W, --height H".
+        auto joins = [&](size_t j) { return kRenderOptions[j].apply && !kRenderOptions[j].help; };
+        std::string spelling;
+        for (size_t j = i; j < count && (j == i || joins(j)); ++j) {
+            const RenderOption& part = kRenderOptions[j];
+            if (j > i) spelling += ", ";
+            if (part.alias) spelling += std::string(part.alias) + ", ";
+            spelling += part.flag;
+            if (part.value_name) spelling += std::string(" ") + part.value_name;
+        }
+        out += help_lines(spelling, o.help);
+        while (i + 1 < count && joins(i + 1)) ++i;
+    }
+    // A declared render setting the list does not place still has its line.
+    for (const std::string& flag : render_setting_flags()) {
+        if (!placed.count(flag)) out += setting_help(flag);
+    }
+    return out + "\n" + integrators_help();
+}
+
+const char* option_use_text(OptionUse use) {
+    switch (use) {
+        case OptionUse::Load:
+            return "an option of reading the scene";
+        case OptionUse::Render:
+            return "an option of the render";
+        case OptionUse::Output:
+            return "an option of writing the image";
+        case OptionUse::Command:
+            return "an option of the command line only";
+    }
+    return "";
+}
+
+// `rayo render`'s arguments; with `only`, an option of another use is a UsageError (the library
+// callers of apps/cli/render_options.h).
+RenderArgs parse_render_args(const std::vector<std::string>& args,
+                             std::optional<OptionUse> only = std::nullopt) {
     RenderArgs r;
     ArgCursor cursor(args);
+    auto check_use = [&](const std::string& flag, OptionUse use) {
+        if (only && use != *only) {
+            throw UsageError(flag + ": " + option_use_text(use) + ", not " +
+                             option_use_text(*only));
+        }
+    };
     while (cursor.next()) {
         const std::string& a = cursor.current();
         if (const FlagArity arity = setting_flag_arity(a); arity != FlagArity::None) {
+            check_use(a, OptionUse::Render);
             SettingFlag flag{a, arity == FlagArity::Value ? cursor.value() : std::string()};
             check_setting_flag(flag);  // refused here, before the scene is read
             r.settings.push_back(std::move(flag));
-            continue;
-        }
-        if (a == "--integrator") {
-            r.integrator = cursor.value();
-            integrator_flag(*r.integrator);
-            continue;
-        }
-        if (a == "-o" || a == "--output") {
-            r.output = cursor.value();
-        } else if (a == "--width") {
-            r.width = parse_int(a, cursor.value(), 1, kMaxImageSide);
-        } else if (a == "--height") {
-            r.height = parse_int(a, cursor.value(), 1, kMaxImageSide);
-        } else if (a == "--threads") {
-            r.threads = parse_int(a, cursor.value(), 1, 4096);
-        } else if (a == "--sphere-method") {
-            const std::string& m = cursor.value();
-            r.sphere_method = parse_sphere_method(m);
-            if (!r.sphere_method) {
-                throw UsageError(a + ": expected auto, user, bruteforce, embree-point or mesh:N " +
-                                 "(N in 0.." + std::to_string(kMaxMeshLevel) + "), got '" + m +
-                                 "'");
-            }
-        } else if (a == "--max-error-px") {
-            r.max_error_px = static_cast<float>(parse_number(a, cursor.value(), 1e-6, 1e6));
-        } else if (a == "--shape-method") {
-            const std::string& m = cursor.value();
-            r.shape_method = parse_shape_method(m);
-            if (!r.shape_method) {
-                throw UsageError(a + ": expected 'analytic', 'mesh' or 'auto', got '" + m + "'");
-            }
-        } else if (a == "--gi-view") {
-            const std::string& m = cursor.value();
-            if (m != "smooth" && m != "patches") {
-                throw UsageError(a + ": expected 'smooth' or 'patches', got '" + m + "'");
-            }
-            r.gi_view_patches = m == "patches";
-        } else if (a == "--gi-log") {
-            r.gi_log = cursor.value();
-        } else if (a == "--nff-light-intensity") {
-            r.load_options.nff.light_intensity =
-                static_cast<float>(parse_number(a, cursor.value(), 0.0, 1e30));
-        } else if (a == "--environment") {
-            r.environment = cursor.value();
-            r.load_options.model.environment_lit = true;
-        } else if (a == "--restrict-paths") {
-            r.load_options.restrict_paths = true;
-        } else if (a == "--view-dir") {
-            r.load_options.model.view_direction = parse_direction(a, cursor.value());
-        } else if (a == "--no-ground") {
-            r.load_options.model.ground = false;
-        } else if (a == "--camera") {
-            r.load_options.model.camera = cursor.value();
-        } else if (a == "--auto-lights") {
-            r.load_options.model.auto_lights = true;
-        } else if (a == "--no-instances") {
-            r.load_options.model.instances = false;
-        } else if (a == "--flat-spheres") {
-            r.flat_spheres = true;
-        } else if (a == "--single-rays") {
-            r.single_rays = true;
-        } else if (a == "--display") {
-            r.output_options.display = cursor.value();
-        } else if (a == "--view") {
-            r.output_options.view = cursor.value();
-        } else if (a == "--range") {
-            const std::string& m = cursor.value();
-            if (m == "clamp") {
-                r.output_options.range = RangeMode::Clamp;
-            } else if (m == "normalize") {
-                r.output_options.range = RangeMode::Normalize;
-            } else {
-                throw UsageError(a + ": expected 'clamp' or 'normalize', got '" + m + "'");
-            }
-        } else if (a == "--stream") {
-            r.stream = StreamMode::Always;
-        } else if (a == "--no-stream") {
-            r.stream = StreamMode::Never;
-        } else if (a == "--half") {
-            r.output_options.half_float_exr = true;
-        } else if (a == "--exr-compression") {
-            const std::string& m = cursor.value();
-            if (!is_exr_compression(m)) {
-                throw UsageError(a + ": expected one of " + exr_compression_names() + ", got '" +
-                                 m + "'");
-            }
-            r.output_options.exr_compression = m;
-        } else if (a == "--resume") {
-            r.resume = true;
-        } else if (a == "--no-journal") {
-            r.journal = false;
-        } else if (a == "--journal-after") {
-            r.journal_after_s = parse_number(a, cursor.value(), 0.0, 1e6);
-        } else if (a == "--quiet" || a == "-q") {
-            r.quiet = true;
-        } else if (a == "--stats") {
-            r.stats = true;
+        } else if (const RenderOption* option = render_option(a)) {
+            check_use(a, option->use);
+            option->apply(r, a, option->value_name ? cursor.value() : std::string());
         } else if (!a.empty() && a[0] == '-') {
             throw UsageError("unknown option '" + a + "' (see rayo render --help)");
         } else if (!r.scene_path) {
@@ -455,6 +547,8 @@ RenderArgs parse_render_args(const std::vector<std::string>& args) {
     }
     return r;
 }
+
+void apply_environment(const RenderArgs& args, SceneDescription& d);
 
 // Command-line values override the scene's. One of width/height alone keeps the aspect ratio.
 void apply_overrides(const RenderArgs& args, SceneDescription& d) {
@@ -479,8 +573,12 @@ void apply_overrides(const RenderArgs& args, SceneDescription& d) {
     if (args.max_error_px) d.settings.max_error_px = *args.max_error_px;
     if (args.shape_method) d.settings.shape_method = *args.shape_method;
     if (args.gi_view_patches) d.settings.gi_view_patches = true;
+    apply_environment(args, d);
+}
+
+// --environment FILE: in place of the scene's environment light, or added.
+void apply_environment(const RenderArgs& args, SceneDescription& d) {
     if (args.environment) {
-        // In place of the scene's environment, or added.
         EnvironmentLight environment;
         FileAccess logged;
         logged.keep_log();
@@ -644,6 +742,8 @@ std::string texture_summary(const RenderResult& r) {
     return text.str();
 }
 
+}  // namespace
+
 // One line of `rayo info` (and of --stats for a model file) about a light: its type, place or
 // direction and intensity.
 std::string describe_light(const Light& light) {
@@ -684,6 +784,8 @@ std::string describe_light(const Light& light) {
     }
     return out.str();
 }
+
+namespace {
 
 // Where the camera stands and looks: "eye X Y Z, look_at X Y Z, up X Y Z" (the image's
 // rayo:camera metadata, the `view` lines of `rayo info` and --stats): with the field of view,
@@ -1378,6 +1480,44 @@ int run_cli(int argc, const char* const* argv, std::ostream& out, std::ostream& 
         err << message;
         return code;
     }
+}
+
+std::vector<RenderOptionInfo> render_option_list() {
+    std::vector<RenderOptionInfo> list;
+    for (const RenderOption& o : kRenderOptions) {
+        if (!o.apply) continue;  // the declared settings follow
+        list.push_back(
+            {o.flag, o.use, o.value_name != nullptr, help_lines(o.flag, o.help ? o.help : "")});
+    }
+    std::vector<std::string> declared = render_setting_flags();
+    for (const std::string& flag : integrator_setting_flags()) {
+        if (std::find(declared.begin(), declared.end(), flag) == declared.end()) {
+            declared.push_back(flag);
+        }
+    }
+    for (const std::string& flag : declared) {
+        list.push_back({flag, OptionUse::Render, setting_flag_arity(flag) == FlagArity::Value,
+                        setting_help(flag)});
+    }
+    return list;
+}
+
+SceneDescription load_scene_with_options(const std::optional<std::string>& path,
+                                         const std::vector<std::string>& words) {
+    const RenderArgs args = parse_render_args(words, OptionUse::Load);
+    SceneDescription d = path ? load_scene_file(*path, args.load_options) : make_default_scene();
+    apply_environment(args, d);
+    return d;
+}
+
+int apply_render_options(const std::vector<std::string>& words, SceneDescription& d) {
+    const RenderArgs args = parse_render_args(words, OptionUse::Render);
+    apply_overrides(args, d);
+    return args.threads.value_or(0);
+}
+
+OutputOptions output_options_from(const std::vector<std::string>& words) {
+    return parse_render_args(words, OptionUse::Output).output_options;
 }
 
 }  // namespace rayo

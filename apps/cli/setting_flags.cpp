@@ -1,5 +1,6 @@
 #include "apps/cli/setting_flags.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "apps/cli/usage_error.h"
@@ -93,33 +94,6 @@ struct HelpCollector {
     }
 };
 
-// The help's layout: flags from column 2, their text from column 27, lines up to 100.
-std::string help_lines(const std::string& flag_part, const std::string& text, size_t indent = 2) {
-    constexpr size_t kTextColumn = 27, kWidth = 96;
-    std::string out = std::string(indent, ' ') + flag_part;
-    std::string line;
-    if (out.size() + 1 > kTextColumn) {
-        out += "\n";
-        line.assign(kTextColumn, ' ');
-    } else {
-        line = out + std::string(kTextColumn - out.size(), ' ');
-        out.clear();
-    }
-    std::istringstream words(text);
-    std::string word;
-    bool first = true;
-    while (words >> word) {
-        if (!first && line.size() + 1 + word.size() > kWidth) {
-            out += line + "\n";
-            line.assign(kTextColumn, ' ');
-            first = true;
-        }
-        line += (first ? "" : " ") + word;
-        first = false;
-    }
-    return out + line + "\n";
-}
-
 std::string entry_help(const HelpEntry& e, const char* default_owner, size_t indent = 2) {
     std::string text = e.text;
     if (!e.range.empty()) text += ", " + e.range;
@@ -164,6 +138,51 @@ struct Describer {
 };
 
 }  // namespace
+
+// The help's layout: flags from column 2, their text from column 27, lines up to 100.
+std::string help_lines(const std::string& flag_part, const std::string& text, size_t indent) {
+    constexpr size_t kTextColumn = 27, kWidth = 96;
+    std::string out = std::string(indent, ' ') + flag_part;
+    std::string line;
+    if (out.size() + 1 > kTextColumn) {
+        out += "\n";
+        line.assign(kTextColumn, ' ');
+    } else {
+        line = out + std::string(kTextColumn - out.size(), ' ');
+        out.clear();
+    }
+    std::istringstream words(text);
+    std::string word;
+    bool first = true;
+    while (words >> word) {
+        if (!first && line.size() + 1 + word.size() > kWidth) {
+            out += line + "\n";
+            line.assign(kTextColumn, ' ');
+            first = true;
+        }
+        line += (first ? "" : " ") + word;
+        first = false;
+    }
+    return out + line + "\n";
+}
+
+std::vector<std::string> render_setting_flags() {
+    std::vector<std::string> flags;
+    for (const HelpEntry& e : help_entries<RenderSettings>()) flags.push_back(e.flag);
+    return flags;
+}
+
+std::vector<std::string> integrator_setting_flags() {
+    std::vector<std::string> flags;
+    for_each_integrator([&](auto s) {
+        for (const HelpEntry& e : help_entries<decltype(s)>()) {
+            if (std::find(flags.begin(), flags.end(), e.flag) == flags.end()) {
+                flags.push_back(e.flag);
+            }
+        }
+    });
+    return flags;
+}
 
 FlagArity setting_flag_arity(const std::string& flag) {
     ArityFinder finder{flag};

@@ -37,6 +37,14 @@ void apply_setting_flags(const std::optional<std::string>& integrator,
 // The --help line(s) of the declared setting with this flag, its default in brackets (from the
 // owner's default-constructed settings), wrapped at the help's columns.
 std::string setting_help(const std::string& flag);
+// The flags of the declared render settings (RenderSettings::fields), in declaration order.
+std::vector<std::string> render_setting_flags();
+// The flags of every registered integrator's declared settings, each once, in registration order.
+std::vector<std::string> integrator_setting_flags();
+
+// The help's layout: `flag_part` from column `indent`, `text` wrapped from column 27 to 96.
+std::string help_lines(const std::string& flag_part, const std::string& text, size_t indent = 2);
+
 // --integrator, then each registered integrator with its summary and its flags' lines.
 std::string integrators_help();
 
