@@ -37,9 +37,25 @@ std::string executable_directory() {
     return slash == std::string::npos ? "" : path.substr(0, slash);
 }
 
+// The directory of the shared object this code is linked into, when it is not the executable
+// (the Python module, build/python/rayo*.so); "" otherwise.
+std::string library_directory() {
+    Dl_info info{};
+    if (::dladdr(reinterpret_cast<void*>(&executable_directory), &info) == 0 ||
+        info.dli_fname == nullptr) {
+        return "";
+    }
+    const std::string path = info.dli_fname;
+    const size_t slash = path.find_last_of('/');
+    if (slash == std::string::npos) return "";
+    const std::string dir = path.substr(0, slash);
+    return dir == executable_directory() ? "" : dir;
+}
+
 // Where the module is looked for, in order: $RAYO_IMAGE_MODULE alone when set; else beside the
-// executable (the build tree), then in ../lib/rayo from it (an install moved to another prefix),
-// then the install directory configured at build time.
+// executable (the build tree), then in ../lib/rayo from it (an install moved to another prefix);
+// for a library loaded by another program (the Python module), its folder's parent (the build
+// tree); then the install directory configured at build time.
 std::vector<std::string> module_candidates() {
     const char* env = std::getenv("RAYO_IMAGE_MODULE");
     if (env != nullptr && env[0] != '\0') return {env};
@@ -48,6 +64,9 @@ std::vector<std::string> module_candidates() {
     if (!dir.empty()) {
         paths.push_back(dir + "/" + kImageModuleName);
         paths.push_back(dir + "/../lib/rayo/" + kImageModuleName);
+    }
+    if (const std::string library = library_directory(); !library.empty()) {
+        paths.push_back(library + "/../" + kImageModuleName);
     }
     paths.push_back(std::string(RAYO_IMAGE_MODULE_INSTALL_DIR) + "/" + kImageModuleName);
     return paths;

@@ -11,6 +11,7 @@ packages=(
   libtinyobjloader-dev libtinygltf-dev libassimp-dev libdraco-dev
   libopenmpi-dev openmpi-bin
   gnuplot-nox
+  pybind11-dev python3-dev python3-numpy python3-pytest
 )
 if [[ "${RAYO_SETUP_EXTRAS:-}" == *povray* ]]; then packages+=(povray); fi
 if [[ "${RAYO_SETUP_EXTRAS:-}" == *clang* ]]; then packages+=(clang libclang-rt-14-dev); fi

@@ -1415,7 +1415,7 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
                        const std::string& where, MeshImportStats* stats, const FileAccess& access,
                        GltfNodes* nodes) {
     const std::string bytes = read_input_file(path, where, "mesh file", kMaxMeshFileBytes, access);
-    GltfFiles files{path, access, {}};
+    GltfFiles files{path, access, {}, {}};
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(keep_image_bytes, nullptr);
     loader.SetFsCallbacks(

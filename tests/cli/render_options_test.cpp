@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <sstream>
 
 #include "apps/cli/cli.h"
@@ -103,12 +104,12 @@ TEST(RenderOptions, EachOptionBelongsToOneCall) {
     const rayo::OutputOptions o = rayo::output_options_from({"--half", "--exr-compression", "piz"});
     EXPECT_TRUE(o.half_float_exr);
     EXPECT_EQ(o.exr_compression, "piz");
-    for (const RenderOptionInfo& info : rayo::render_option_list()) {
-        if (info.flag == "--half") EXPECT_EQ(info.use, OptionUse::Output);
-        if (info.flag == "--environment") EXPECT_EQ(info.use, OptionUse::Load);
-        if (info.flag == "--max-depth") EXPECT_EQ(info.use, OptionUse::Render);
-        if (info.flag == "--journal-after") EXPECT_EQ(info.use, OptionUse::Command);
-    }
+    std::map<std::string, OptionUse> uses;
+    for (const RenderOptionInfo& info : rayo::render_option_list()) uses[info.flag] = info.use;
+    EXPECT_EQ(uses.at("--half"), OptionUse::Output);
+    EXPECT_EQ(uses.at("--environment"), OptionUse::Load);
+    EXPECT_EQ(uses.at("--max-depth"), OptionUse::Render);
+    EXPECT_EQ(uses.at("--journal-after"), OptionUse::Command);
 }
 
 }  // namespace

@@ -113,7 +113,9 @@ TEST(HeightField, GridLinesDiagonalsAndCornersDoNotLeak) {
                 const bool found = f.nearest(corner, d, 0.0f, 1e30f, hit);
                 ASSERT_EQ(found, std::isfinite(expected))
                     << "from (" << i << ", " << j << ") along " << d.x << " " << d.y << " " << d.z;
-                if (found) EXPECT_NEAR(hit.t, expected, 1e-4 * (1.0 + expected));
+                if (found) {
+                    EXPECT_NEAR(hit.t, expected, 1e-4 * (1.0 + expected));
+                }
                 ++rays;
             }
         }

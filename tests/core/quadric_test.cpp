@@ -198,7 +198,9 @@ TEST(Quadric, NearestIsTheFirstCrossingPastTnear) {
         const int n = q.crossings(o, d, c);
         for (int k = 0; k < n; ++k) {
             EXPECT_EQ(c[k].entering, k % 2 == 0);
-            if (k > 0) EXPECT_LE(c[k - 1].t, c[k].t);
+            if (k > 0) {
+                EXPECT_LE(c[k - 1].t, c[k].t);
+            }
         }
         ShapeHit hit;
         const bool found = q.nearest(o, d, 0.0f, kInf, hit);
