@@ -227,6 +227,22 @@ def test_a_spheres_coverage_is_its_projected_disc():
     assert image[..., 0].mean() == pytest.approx(expected, rel=2e-3)
 
 
+def test_a_diffuse_sphere_under_a_uniform_sky_reflects_its_albedo():
+    # Path tracing, a convex Lambertian sphere of albedo 0.5 under a uniform environment of
+    # radiance 1: every reflected ray escapes, so L = 0.5 on the sphere and 1 beside it.
+    d = {"rayo": 1, "camera": {"eye": [0, 0, 4], "look_at": [0, 0, 0], "vfov": 30,
+                               "width": 64, "height": 64},
+         "render": {"spp": 64, "integrator": {"type": "path", "max_depth": 16}},
+         "environment": {"color": 1},
+         "materials": {"grey": {"kd": 0.5, "ks": 0}},
+         "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "grey"}]}
+    image, stats = rayo.render(rayo.Scene.from_dict(d))
+    assert stats["integrator"].startswith("path")
+    inside = image[16:48, 16:48, :3]  # the sphere's disc has a radius of 30.8 pixels
+    assert inside.mean() == pytest.approx(0.5, rel=0.01)
+    assert np.all(image[0, 0] == 1.0) and np.all(image[63, 63] == 1.0)
+
+
 # --- images -------------------------------------------------------------------------------------
 
 def test_write_uses_the_clis_writers_and_views(tmp_path):
