@@ -85,6 +85,17 @@ bool MeshEmitter::sample(const Vec3& point, const glm::vec2& u, LightSample& out
     return true;
 }
 
+void AreaLight::describe(std::ostream& out) const {
+    static const char* const kShapes[] = {"rectangle", "disk", "sphere", "mesh"};
+    out << " " << kShapes[static_cast<int>(shape)];
+    if (mesh) {
+        out << " triangles " << mesh->size();
+    } else {
+        write_color_and_intensity(out, color, intensity);
+    }
+    out << " area " << area() << " samples " << samples;
+}
+
 float AreaLight::area() const {
     switch (shape) {
         case Shape::Mesh:

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "shading/light_sample.h"
+#include "shading/light_text.h"
 
 namespace rayo {
 
@@ -74,6 +75,9 @@ struct AreaLight {
 
     Vec3 radiance() const { return color * intensity; }  // not for meshes: per triangle
     float area() const;
+    // " rectangle|disk|sphere color ... intensity ... area A samples S", a mesh's " mesh
+    // triangles N area A samples S".
+    void describe(std::ostream& out) const;
     int sample_count() const { return samples; }
     // A point of the light for u ∈ [0,1)² (rectangle and disk: uniform over the area; sphere:
     // uniform over the cone of directions it subtends), as the direction and distance to it, the

@@ -5,6 +5,7 @@
 
 #include "core/shapes/shape_fields.h"
 #include "shading/light_sample.h"
+#include "shading/light_text.h"
 
 namespace rayo {
 
@@ -21,6 +22,11 @@ struct DirectionalLight {
         f.optional("intensity", intensity, FieldKind::NonNegative);
     }
     std::optional<FieldProblem> problem() const { return std::nullopt; }
+    void describe(std::ostream& out) const {
+        out << " direction ";
+        write_triple(out, direction);
+        write_color_and_intensity(out, color, intensity);
+    }
     static constexpr bool kDelta = true;  // one direction
     float pdf(const Vec3& /*point*/, const Vec3& /*direction*/) const { return 0.0f; }
 

@@ -16,6 +16,7 @@
 #include "core/piecewise_constant.h"
 #include "core/shapes/shape_fields.h"
 #include "shading/light_sample.h"
+#include "shading/light_text.h"
 
 namespace rayo {
 
@@ -63,6 +64,13 @@ struct EnvironmentLight {
             return FieldProblem{"samples", "expected an integer in [1, 4096]"};
         }
         return std::nullopt;
+    }
+
+    // "[ image WxH] color ... intensity ... rotation R samples S".
+    void describe(std::ostream& out) const {
+        if (map) out << " image " << map->width() << "x" << map->height();
+        write_color_and_intensity(out, color, intensity);
+        out << " rotation " << rotation << " samples " << samples;
     }
 
     // The radiance a ray leaving the scene along `direction` (unit) sees.

@@ -2,6 +2,7 @@
 // The lights the integrator samples. Every light type provides
 //   bool sample(const Vec3& point, const glm::vec2& u, LightSample& out) const;
 //   int sample_count() const;  // points per shading point: 1, or an area light's `samples`
+//   void describe(std::ostream&) const;  // what follows kName in `rayo info` (light_text.h)
 // (shading/light_sample.h; u in [0,1)² picks a point on lights with an extent). Adding a light
 // type is its file pair and its entry in the list below; the integrator only calls
 // sample_light, light_sample_count and light_sample_u (docs/architecture.md, "Extension points").

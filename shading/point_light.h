@@ -7,6 +7,7 @@
 
 #include "core/shapes/shape_fields.h"
 #include "shading/light_sample.h"
+#include "shading/light_text.h"
 
 namespace rayo {
 
@@ -57,6 +58,12 @@ struct PointLight {
         f.optional("attenuation", attenuation, FieldKind::Attenuation);
     }
     std::optional<FieldProblem> problem() const { return std::nullopt; }
+    // " position x y z color r g b intensity i", after kName (shading/light_text.h).
+    void describe(std::ostream& out) const {
+        out << " position ";
+        write_triple(out, position);
+        write_color_and_intensity(out, color, intensity);
+    }
     // A single point: no direction has a density (sampling integrators treat it as a delta).
     static constexpr bool kDelta = true;
     float pdf(const Vec3& /*point*/, const Vec3& /*direction*/) const { return 0.0f; }

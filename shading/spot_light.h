@@ -55,6 +55,16 @@ struct SpotLight {
         }
         return std::nullopt;
     }
+    // " position ... direction ... cone 0-45 degrees color ... intensity ...".
+    void describe(std::ostream& out) const {
+        out << " position ";
+        write_triple(out, position);
+        out << " direction ";
+        write_triple(out, direction);
+        out << " cone " << glm::degrees(std::acos(cos_inner)) << "-"
+            << glm::degrees(std::acos(cos_outer)) << " degrees";
+        write_color_and_intensity(out, color, intensity);
+    }
     void finish() {
         constexpr float kDegree = 3.14159265358979323846f / 180.0f;
         cos_inner = std::cos(inner_cone_angle * kDegree);

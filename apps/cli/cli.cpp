@@ -744,44 +744,16 @@ std::string texture_summary(const RenderResult& r) {
 
 }  // namespace
 
-// One line of `rayo info` (and of --stats for a model file) about a light: its type, place or
-// direction and intensity.
+// One line of `rayo info` (and of --stats for a model file) about a light: its kind, then what
+// the light says of itself (its describe(), shading/light_text.h).
 std::string describe_light(const Light& light) {
     std::ostringstream out;
-    auto vec = [&](const Vec3& v) { out << v.x << " " << v.y << " " << v.z; };
-    auto color_and_intensity = [&](const Vec3& color, float intensity) {
-        out << " color ";
-        vec(color);
-        out << " intensity " << intensity;
-    };
-    if (const auto* l = std::get_if<PointLight>(&light)) {
-        out << "point position ";
-        vec(l->position);
-        color_and_intensity(l->color, l->intensity);
-    } else if (const auto* l = std::get_if<SpotLight>(&light)) {
-        out << "spot position ";
-        vec(l->position);
-        out << " direction ";
-        vec(l->direction);
-        out << " cone " << glm::degrees(std::acos(l->cos_inner)) << "-"
-            << glm::degrees(std::acos(l->cos_outer)) << " degrees";
-        color_and_intensity(l->color, l->intensity);
-    } else if (const auto* l = std::get_if<DirectionalLight>(&light)) {
-        out << "directional direction ";
-        vec(l->direction);
-        color_and_intensity(l->color, l->intensity);
-    } else if (const auto* l = std::get_if<EnvironmentLight>(&light)) {
-        out << "environment";
-        if (l->map) out << " image " << l->map->width() << "x" << l->map->height();
-        color_and_intensity(l->color, l->intensity);
-        out << " rotation " << l->rotation << " samples " << l->samples;
-    } else if (const auto* l = std::get_if<AreaLight>(&light)) {
-        static const char* const kShapes[] = {"rectangle", "disk", "sphere", "mesh"};
-        out << "area " << kShapes[static_cast<int>(l->shape)];
-        if (l->mesh) out << " triangles " << l->mesh->size();
-        if (!l->mesh) color_and_intensity(l->color, l->intensity);
-        out << " area " << l->area() << " samples " << l->samples;
-    }
+    std::visit(
+        [&](const auto& l) {
+            out << std::decay_t<decltype(l)>::kName;
+            l.describe(out);
+        },
+        light);
     return out.str();
 }
 

@@ -369,10 +369,16 @@ py::dict error_dict(const ImageError& e) {
     return out;
 }
 
-py::list bench_accuracy(int size, const py::object& progress) {
+py::list bench_accuracy(const std::optional<std::string>& output, int size,
+                        const py::object& progress) {
     std::ostringstream log;
     const std::vector<AccuracyRow> rows = run_interruptible<std::vector<AccuracyRow>>(
-        [size, &log] { return run_accuracy_study(log, size); }, [] { return 0.0; }, progress);
+        [output, size, &log] {
+            std::vector<AccuracyRow> result = run_accuracy_study(log, size);
+            if (output) write_accuracy_files(*output, result, log, size);
+            return result;
+        },
+        [] { return 0.0; }, progress);
     py::list out;
     for (const AccuracyRow& r : rows) {
         py::dict row;
@@ -489,10 +495,11 @@ PYBIND11_MODULE(rayo, m) {
           "stored; 8-bit formats as value/255).");
     m.def("options", &options_view,
           "Every keyword of rayo.load, rayo.render and rayo.write, with its flag and help.");
-    m.def("bench_accuracy", &bench_accuracy, py::arg("size") = kAccuracyImageSize, py::kw_only(),
-          py::arg("progress") = py::none(),
+    m.def("bench_accuracy", &bench_accuracy, py::arg("output") = py::none(), py::kw_only(),
+          py::arg("size") = kAccuracyImageSize, py::arg("progress") = py::none(),
           "The sphere-method accuracy study (`rayo bench accuracy`): one dict per scene, method "
-          "and precision, with its time and its error against the double-precision reference.");
+          "and precision, with its time and its error against the double-precision reference; "
+          "with output, also its CSV files and charts.");
     m.def("bench_suite", &bench_suite, py::arg("output") = py::none(), py::kw_only(),
           py::arg("size") = 3, py::arg("width") = 512, py::arg("threads") = 0,
           py::arg("scenes") = std::vector<std::string>(), py::arg("progress") = py::none(),

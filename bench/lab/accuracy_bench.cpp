@@ -223,7 +223,14 @@ void run_accuracy_bench(const std::string& dir, std::ostream& progress, int size
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) throw InputError(dir, "cannot create the output directory: " + ec.message());
-    const std::vector<AccuracyRow> rows = run_accuracy_study(progress, size);
+    write_accuracy_files(dir, run_accuracy_study(progress, size), progress, size);
+}
+
+void write_accuracy_files(const std::string& dir, const std::vector<AccuracyRow>& rows,
+                          std::ostream& progress, int size) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw InputError(dir, "cannot create the output directory: " + ec.message());
     const std::string csv = dir + "/accuracy.csv";
     {
         std::ofstream out(csv);

@@ -42,9 +42,14 @@ std::vector<AccuracyRow> run_accuracy_study(std::ostream& progress, int size = k
 
 void write_accuracy_csv(std::ostream& out, const std::vector<AccuracyRow>& rows);
 
-// Writes DIR/accuracy.csv, DIR/stability.csv, DIR/charts.gp and runs gnuplot on it. Throws
-// InputError when DIR cannot be written or gnuplot fails.
+// Runs the study, then write_accuracy_files. Throws InputError when DIR cannot be written or
+// gnuplot fails.
 void run_accuracy_bench(const std::string& dir, std::ostream& progress,
                         int size = kAccuracyImageSize);
+
+// Writes the study's `rows` (made at `size`) as DIR/accuracy.csv, runs the stability sweep into
+// DIR/stability.csv, writes DIR/charts.gp and runs gnuplot on it.
+void write_accuracy_files(const std::string& dir, const std::vector<AccuracyRow>& rows,
+                          std::ostream& progress, int size = kAccuracyImageSize);
 
 }  // namespace rayo

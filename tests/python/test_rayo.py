@@ -335,6 +335,11 @@ def test_the_studies_return_their_tables(tmp_path):
     assert os.path.exists(tmp_path / "suite" / "suite.csv")
     with pytest.raises(rayo.InputError):
         rayo.bench_suite(scenes=["nonesuch"], width=8)
+    rows = rayo.bench_accuracy(str(tmp_path / "accuracy"), size=24)
+    assert {r["method"] for r in rows} >= {"user", "bruteforce", "embree-point", "mesh:3"}
+    doubles = [r for r in rows if r["math"] == "double"]
+    assert doubles and all(r["rmse"] == 0.0 for r in doubles)
+    assert os.path.exists(tmp_path / "accuracy" / "accuracy.csv")
 
 
 def test_the_documented_example_script_runs(tmp_path):
