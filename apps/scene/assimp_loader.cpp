@@ -5,6 +5,7 @@
 
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <string>
 
@@ -130,6 +131,29 @@ bool check_face_indices(const aiScene& scene, const std::string& path) {
     return any_polygon;
 }
 
+// A binary STL's triangle count against its size (80-byte header, the count, 50 bytes per
+// triangle), checked before assimp reads it: assimp takes a count the file cannot hold for an
+// ASCII file and fails with a message about its own temporary name. A file that starts with
+// "solid" and is not exactly the size of a binary one is ASCII, left to assimp.
+void check_stl_file(const std::string& bytes, const std::string& path) {
+    constexpr uint64_t kHeader = 84, kTriangle = 50;
+    const bool says_solid = bytes.compare(0, 5, "solid") == 0;
+    if (bytes.size() < kHeader) {
+        if (says_solid) return;
+        throw InputError(path, "binary STL shorter than its 84-byte header (" +
+                                   std::to_string(bytes.size()) + " bytes)");
+    }
+    uint32_t count = 0;
+    std::memcpy(&count, bytes.data() + 80, sizeof count);
+    const uint64_t expected = kHeader + kTriangle * count;
+    if (says_solid && bytes.size() != expected) return;
+    if (bytes.size() < expected) {
+        throw InputError(path, "binary STL declares " + std::to_string(count) +
+                                   " triangles, which take " + std::to_string(expected) +
+                                   " bytes, but the file has " + std::to_string(bytes.size()));
+    }
+}
+
 // A plain "OFF" file's counts and face indices, checked before assimp reads it: assimp reserves
 // the declared vertex count before reading (2^31 vertices in a small file: bad_alloc) and clamps
 // an out-of-range face index to the last vertex (a silently different mesh). Refused at
@@ -207,6 +231,7 @@ TriangleMesh load_assimp_mesh(const std::string& path, std::vector<Material>& ma
     if (bytes.empty()) throw InputError(path, "empty " + format + " file");
     if (ext == ".ply") check_ply_header(bytes, path);
     if (ext == ".off") check_off_file(bytes, path);
+    if (ext == ".stl") check_stl_file(bytes, path);
 
     Assimp::Importer importer;
     // Points and lines (PLY point clouds, edges) are dropped; faces are triangulated.

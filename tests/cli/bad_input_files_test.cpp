@@ -331,6 +331,36 @@ TEST_F(BadInputFiles, PolygonsAboveTheVertexLimitAreRefusedAtTheirFace) {
     }
 }
 
+// A binary STL whose triangle count its size cannot hold (2^32 - 1 in a 134-byte file) is
+// refused with both numbers, before assimp reads it; one cut short of its header too.
+TEST_F(BadInputFiles, BinaryStlCountsBeyondTheFileAreRefused) {
+    auto stl = [](uint32_t count, size_t triangles) {
+        std::string bytes(80, ' ');
+        bytes.append(reinterpret_cast<const char*>(&count), sizeof count);
+        const float facet[12] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0};
+        for (size_t i = 0; i < triangles; ++i) {
+            bytes.append(reinterpret_cast<const char*>(facet), sizeof facet);
+            bytes.append(2, '\0');
+        }
+        return bytes;
+    };
+    write("huge.stl", stl(0xffffffffu, 1));
+    write("short.stl", stl(3, 2));
+    write("stub.stl", std::string(40, 'x'));
+    write("one.stl", stl(1, 1));
+    expect_refused({"info", "huge.stl"}, "huge.stl",
+                   "binary STL declares 4294967295 triangles, which take 214748364834 bytes, but "
+                   "the file has 134",
+                   "STL count 2^32 - 1");
+    expect_refused({"render", "short.stl", "-o", "x.png"}, "short.stl",
+                   "binary STL declares 3 triangles, which take 234 bytes, but the file has 184",
+                   "STL one triangle short");
+    expect_refused({"info", "stub.stl"}, "stub.stl", "binary STL shorter than its 84-byte header",
+                   "STL stub");
+    const WatchedResult r = run_watched({"info", "one.stl"}, kSecondsLimit);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
 // A write that fails (here: beyond the file-size limit, EFBIG) names the output the user gave,
 // not the temporary file, and gives the system's reason; nothing is left behind.
 TEST_F(BadInputFiles, WriteErrorsNameTheOutputAndTheReason) {
