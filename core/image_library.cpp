@@ -55,7 +55,8 @@ std::string library_directory() {
 // Where the module is looked for, in order: $RAYO_IMAGE_MODULE alone when set; else beside the
 // executable (the build tree), then in ../lib/rayo from it (an install moved to another prefix);
 // for a library loaded by another program (the Python module), its folder's parent (the build
-// tree) and PREFIX/lib/rayo from PREFIX/lib/pythonX.Y/dist-packages (an install); then the install directory configured at build time.
+// tree) and PREFIX/lib/rayo from PREFIX/lib/pythonX.Y/dist-packages (an install); then the install
+// directory configured at build time.
 std::vector<std::string> module_candidates() {
     const char* env = std::getenv("RAYO_IMAGE_MODULE");
     if (env != nullptr && env[0] != '\0') return {env};
@@ -66,8 +67,9 @@ std::vector<std::string> module_candidates() {
         paths.push_back(dir + "/../lib/rayo/" + kImageModuleName);
     }
     if (const std::string library = library_directory(); !library.empty()) {
-        paths.push_back(library + "/../" + kImageModuleName);                  // build/python/..
-        paths.push_back(library + "/../../rayo/" + kImageModuleName);  // lib/pythonX.Y/dist-packages
+        paths.push_back(library + "/../" + kImageModuleName);  // build/python/..
+        paths.push_back(library + "/../../rayo/" +
+                        kImageModuleName);  // lib/pythonX.Y/dist-packages
     }
     paths.push_back(std::string(RAYO_IMAGE_MODULE_INSTALL_DIR) + "/" + kImageModuleName);
     return paths;

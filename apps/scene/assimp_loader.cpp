@@ -3,6 +3,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <cstring>
@@ -24,24 +25,125 @@ std::string format_name(const std::string& ext) {
     return "OFF";
 }
 
+// A PLY header's property: a scalar of `type`, or a list of `item_type` whose count is a `type`.
+struct PlyProperty {
+    std::string type;
+    bool list = false;
+    std::string item_type;
+};
+
+struct PlyElement {
+    std::string name;
+    uint64_t count = 0;
+    size_t line = 0;
+    std::vector<PlyProperty> properties;
+};
+
+// The bytes of a binary PLY scalar; 0 for a type PLY does not have.
+uint64_t ply_scalar_bytes(const std::string& type) {
+    if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+    if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+    if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
+        type == "float32") {
+        return 4;
+    }
+    if (type == "double" || type == "float64") return 8;
+    return 0;
+}
+
 // The smallest number of bytes one instance of a PLY element can take: in ASCII every property
 // is at least a digit and a separator, in binary its scalar's size (a list's count).
-uint64_t min_element_bytes(const std::vector<std::string>& property_types, bool ascii) {
+uint64_t min_element_bytes(const std::vector<PlyProperty>& properties, bool ascii) {
     uint64_t bytes = 0;
-    for (const std::string& type : property_types) {
-        if (ascii) {
-            bytes += 2;
-        } else if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") {
-            bytes += 1;
-        } else if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") {
-            bytes += 2;
-        } else if (type == "double" || type == "float64") {
-            bytes += 8;
-        } else {
-            bytes += 4;
-        }
+    for (const PlyProperty& p : properties) {
+        const uint64_t size = ply_scalar_bytes(p.type);
+        bytes += ascii ? 2 : (size > 0 ? size : 4);
     }
     return bytes > 0 ? bytes : 1;  // an element without properties still takes a line
+}
+
+std::string ply_instance(const PlyElement& e, uint64_t i) {
+    return "PLY element '" + e.name + "' instance " + std::to_string(i);
+}
+
+// A binary PLY body walked instance by instance, as assimp will read it: every list count is
+// read (a negative one in a signed type is refused: assimp would reserve 2^32 − 5 items), and
+// an instance that runs past the end of the file is refused at its index (assimp read on into
+// zeros and reported a vertex index out of range). Unknown types are left to assimp.
+void check_binary_ply_body(const std::string& bytes, uint64_t start,
+                           const std::vector<PlyElement>& elements, bool big_endian,
+                           const std::string& path) {
+    uint64_t at = start;
+    const uint64_t size = bytes.size();
+    auto past_end = [&](const PlyElement& e, uint64_t i) {
+        throw InputError(path, ply_instance(e, i) + " runs past the end of the file (" +
+                                   std::to_string(size) + " bytes): truncated?");
+    };
+    for (const PlyElement& e : elements) {
+        for (uint64_t i = 0; i < e.count; ++i) {
+            for (const PlyProperty& p : e.properties) {
+                const uint64_t scalar = ply_scalar_bytes(p.type);
+                if (scalar == 0) return;
+                if (at + scalar > size) past_end(e, i);
+                if (!p.list) {
+                    at += scalar;
+                    continue;
+                }
+                const uint64_t item = ply_scalar_bytes(p.item_type);
+                if (item == 0 || p.type == "float" || p.type == "float32" || p.type == "double" ||
+                    p.type == "float64") {
+                    return;
+                }
+                uint64_t raw = 0;
+                for (uint64_t k = 0; k < scalar; ++k) {
+                    const auto byte =
+                        static_cast<uint8_t>(bytes[at + (big_endian ? k : scalar - 1 - k)]);
+                    raw = (raw << 8) | byte;
+                }
+                at += scalar;
+                const bool is_signed = p.type[0] != 'u';
+                if (is_signed && (raw >> (8 * scalar - 1)) != 0) {
+                    const long long count = static_cast<long long>(raw) - (1ll << (8 * scalar));
+                    throw InputError(path, ply_instance(e, i) + ": list count " +
+                                               std::to_string(count) + " is negative");
+                }
+                if (raw > (size - at) / item) past_end(e, i);
+                at += raw * item;
+            }
+        }
+    }
+}
+
+// An ASCII PLY body's list counts, line by line from `first_line`: a count that is not a
+// non-negative integer is refused at its line (assimp took −5 as a count of 2^32 − 5 and ran out
+// of memory). Lines that hold more or less than one instance are left to assimp.
+void check_ascii_ply_lists(const std::string& bytes, uint64_t start, size_t first_line,
+                           const std::vector<PlyElement>& elements, const std::string& path) {
+    std::istringstream body(bytes.substr(start));
+    std::string line, token;
+    size_t number = first_line;
+    for (const PlyElement& e : elements) {
+        const bool has_list = std::any_of(e.properties.begin(), e.properties.end(),
+                                          [](const PlyProperty& p) { return p.list; });
+        for (uint64_t i = 0; i < e.count; ++i, ++number) {
+            if (!std::getline(body, line)) return;
+            if (!has_list) continue;
+            std::istringstream in(line);
+            for (const PlyProperty& p : e.properties) {
+                if (!(in >> token)) return;
+                if (!p.list) continue;
+                if (token.find_first_not_of("0123456789") != std::string::npos ||
+                    token.size() > 9) {
+                    throw InputError(path + ":" + std::to_string(number),
+                                     ply_instance(e, i) + ": list count '" + token +
+                                         "' is not a count (an integer >= 0)");
+                }
+                for (long n = std::stol(token); n > 0; --n) {
+                    if (!(in >> token)) return;
+                }
+            }
+        }
+    }
 }
 
 // A PLY header's element counts against the bytes that follow it: assimp reserves memory for
@@ -54,14 +156,8 @@ void check_ply_header(const std::string& bytes, const std::string& path) {
     const uint64_t body = body_start == std::string::npos ? 0 : bytes.size() - body_start - 1;
     std::istringstream header(bytes.substr(0, end));
     std::string line;
-    bool ascii = false;
-    struct Element {
-        std::string name;
-        uint64_t count = 0;
-        size_t line = 0;
-        std::vector<std::string> types;
-    };
-    std::vector<Element> elements;
+    std::string format;
+    std::vector<PlyElement> elements;
     size_t number = 0;
     while (std::getline(header, line)) {
         ++number;
@@ -69,11 +165,9 @@ void check_ply_header(const std::string& bytes, const std::string& path) {
         std::string keyword;
         in >> keyword;
         if (keyword == "format") {
-            std::string kind;
-            in >> kind;
-            ascii = kind == "ascii";
+            in >> format;
         } else if (keyword == "element") {
-            Element e;
+            PlyElement e;
             std::string count;
             in >> e.name >> count;
             if (count.empty() || count.find_first_not_of("0123456789") != std::string::npos ||
@@ -86,15 +180,19 @@ void check_ply_header(const std::string& bytes, const std::string& path) {
             e.line = number;
             elements.push_back(e);
         } else if (keyword == "property" && !elements.empty()) {
-            std::string type;
-            in >> type;
-            if (type == "list") in >> type;  // the count's type: a list holds at least that
-            elements.back().types.push_back(type);
+            PlyProperty property;
+            in >> property.type;
+            if (property.type == "list") {
+                property.list = true;
+                in >> property.type >> property.item_type;  // the count's type, the items'
+            }
+            elements.back().properties.push_back(property);
         }
     }
+    const bool ascii = format == "ascii";
     uint64_t needed = 0;
-    for (const Element& e : elements) {
-        const uint64_t each = min_element_bytes(e.types, ascii);
+    for (const PlyElement& e : elements) {
+        const uint64_t each = min_element_bytes(e.properties, ascii);
         if (e.count > (body - needed) / each) {
             throw InputError(path + ":" + std::to_string(e.line),
                              "PLY element '" + e.name + "' declares " + std::to_string(e.count) +
@@ -102,6 +200,12 @@ void check_ply_header(const std::string& bytes, const std::string& path) {
                                  " bytes after the header can hold (truncated file?)");
         }
         needed += e.count * each;
+    }
+    if (body_start == std::string::npos) return;
+    if (format == "binary_little_endian" || format == "binary_big_endian") {
+        check_binary_ply_body(bytes, body_start + 1, elements, format == "binary_big_endian", path);
+    } else if (ascii) {
+        check_ascii_ply_lists(bytes, body_start + 1, number + 2, elements, path);
     }
 }
 

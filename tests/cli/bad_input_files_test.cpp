@@ -361,6 +361,45 @@ TEST_F(BadInputFiles, BinaryStlCountsBeyondTheFileAreRefused) {
     EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
+// PLY bodies walked before assimp reads them: a binary file cut short is refused at the instance
+// that runs past the end (assimp read zeros and blamed a vertex index), a negative list count
+// at its instance or line (assimp ran out of memory).
+TEST_F(BadInputFiles, PlyBodiesCutShortOrWithNegativeListCountsAreRefused) {
+    auto binary_ply = [](const char* count_type, int8_t face_count) {
+        std::string bytes =
+            std::string("ply\nformat binary_little_endian 1.0\nelement vertex 3\n") +
+            "property float x\nproperty float y\nproperty float z\nelement face 1\n" +
+            "property list " + count_type + " int vertex_indices\nend_header\n";
+        const float vertices[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+        bytes.append(reinterpret_cast<const char*>(vertices), sizeof vertices);
+        bytes.push_back(static_cast<char>(face_count));
+        const int32_t indices[3] = {0, 1, 2};
+        bytes.append(reinterpret_cast<const char*>(indices), sizeof indices);
+        return bytes;
+    };
+    const std::string whole = binary_ply("uchar", 3);
+    write("whole.ply", whole);
+    write("cut.ply", whole.substr(0, whole.size() - 7));
+    write("negative.ply", binary_ply("char", -5));
+    write("ascii.ply",
+          "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+          "0 0 0\n1 0 0\n0 1 0\n-5 0 1 2\n");
+    expect_refused({"info", "cut.ply"}, "cut.ply",
+                   "PLY element 'face' instance 0 runs past the end of the file (" +
+                       std::to_string(whole.size() - 7) + " bytes): truncated?",
+                   "binary PLY cut 7 bytes short");
+    expect_refused({"render", "negative.ply", "-o", "x.png"}, "negative.ply",
+                   "PLY element 'face' instance 0: list count -5 is negative",
+                   "binary PLY list count -5");
+    expect_refused({"info", "ascii.ply"}, "ascii.ply:13",
+                   "PLY element 'face' instance 0: list count '-5' is not a count",
+                   "ASCII PLY list count -5");
+    const WatchedResult r = run_watched({"info", "whole.ply"}, kSecondsLimit);
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("triangles 1\n"), std::string::npos) << r.output;
+}
+
 // A write that fails (here: beyond the file-size limit, EFBIG) names the output the user gave,
 // not the temporary file, and gives the system's reason; nothing is left behind.
 TEST_F(BadInputFiles, WriteErrorsNameTheOutputAndTheReason) {
