@@ -2,8 +2,9 @@
 // scenes are read by the scene layer's readers, keywords are `rayo render`'s options parsed by
 // the command line's own parser (apps/cli/render_options.h: the same names, bounds and
 // messages), renders run render_scene as the CLI does, and images are written by the CLI's
-// writers and OCIO views. The interpreter's lock is released while a render runs; Ctrl-C stops
-// the tile hand-out (core/stop_request.h) and raises KeyboardInterrupt.
+// writers and OCIO views. The interpreter's lock is released while a render or a study runs;
+// Ctrl-C stops the tile hand-out and the studies' loops (core/stop_request.h,
+// bench/lab/study_stop.h) and raises KeyboardInterrupt.
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -16,14 +17,18 @@
 #include <memory>
 #include <sstream>
 
+#include "apps/cli/int_flag.h"
 #include "apps/cli/render_options.h"
 #include "apps/cli/setting_flags.h"
 #include "apps/cli/usage_error.h"
 #include "apps/scene/image_file.h"
 #include "apps/scene/json_loader.h"
 #include "apps/scene/renderer.h"
+#include "apps/scene/shape_method_choice.h"
 #include "bench/lab/accuracy_bench.h"
+#include "bench/lab/shape_methods_study.h"
 #include "bench/lab/spd_suite.h"
+#include "bench/lab/study_stop.h"
 #include "core/camera.h"
 #include "core/error.h"
 #include "core/film.h"
@@ -123,7 +128,19 @@ std::vector<std::string> option_words(const py::kwargs& keywords, OptionUse use,
 // A loaded scene, read-only: renders take a copy with their options applied.
 struct PyScene {
     std::shared_ptr<const SceneDescription> description;
+    double parse_seconds = 0.0;  // reading and validating it (`rayo render --stats`: time parse)
 };
+
+// A render that a stop request cut short (the request is global: core/stop_request.h; another
+// thread's Ctrl-C or failing progress callback makes one). Raised as KeyboardInterrupt: part of
+// its tiles were never rendered, so it has no image to return.
+struct RenderStopped : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 py::tuple vec3_tuple(const Vec3& v) {
     return py::make_tuple(v.x, v.y, v.z);
@@ -191,7 +208,7 @@ class CountingFilm : public TileSink {
     std::atomic<uint64_t> m_pixels{0};
 };
 
-py::dict render_stats(const SceneDescription& d, const RenderResult& r) {
+py::dict render_stats(const SceneDescription& d, double parse_seconds, const RenderResult& r) {
     const RayCounters& c = r.counters;
     py::dict rays;
     rays["camera"] = c.camera;
@@ -209,8 +226,14 @@ py::dict render_stats(const SceneDescription& d, const RenderResult& r) {
     s["sphere_method"] = sphere_method_name(r.spheres.spheres);
     s["sphere_math"] = sphere_math_name(r.spheres.math);
     s["sphere_method_reason"] = r.spheres.reason;
+    // `rayo render --stats`'s "shape method" lines: the objects' methods, then those the reader
+    // chose (voxel grids, height fields).
+    std::vector<std::string> shape_methods = shape_method_lines(r.shapes);
+    shape_methods.insert(shape_methods.end(), d.method_choices.begin(), d.method_choices.end());
+    s["shape_methods"] = shape_methods;
     s["coherent"] = r.coherent;
     s["primitives"] = r.primitives;
+    s["parse_seconds"] = parse_seconds;
     s["bvh_seconds"] = r.bvh_seconds;
     s["render_seconds"] = r.render_seconds;
     s["rays"] = rays;
@@ -229,59 +252,57 @@ py::dict render_stats(const SceneDescription& d, const RenderResult& r) {
 PyScene load(const std::optional<std::string>& path, const py::kwargs& keywords) {
     const std::vector<std::string> words = option_words(keywords, OptionUse::Load, "load");
     py::gil_scoped_release unlocked;
-    return PyScene{std::make_shared<const SceneDescription>(load_scene_with_options(path, words))};
+    const auto start = std::chrono::steady_clock::now();
+    auto d = std::make_shared<const SceneDescription>(load_scene_with_options(path, words));
+    return PyScene{d, seconds_since(start)};
 }
 
 PyScene from_json(const std::string& text, const std::string& base_dir, const std::string& name) {
     py::gil_scoped_release unlocked;
-    return PyScene{
-        std::make_shared<const SceneDescription>(load_json_string(text, name, base_dir))};
+    const auto start = std::chrono::steady_clock::now();
+    auto d = std::make_shared<const SceneDescription>(load_json_string(text, name, base_dir));
+    return PyScene{d, seconds_since(start)};
 }
 
 // Runs `work` on a thread of its own while this one, holding the interpreter's lock only briefly,
-// watches for Ctrl-C (then asks the render to stop at the next tile and raises
-// KeyboardInterrupt) and calls `progress` with the fraction done.
+// watches for Ctrl-C and calls `progress` with the fraction done. On Ctrl-C (KeyboardInterrupt)
+// or an exception from `progress`, the work is asked to stop at its next tile or study step and
+// waited for with the lock released (waiting with it held, as the future's destructor would,
+// blocks every Python thread until the work ends on its own), the stop request is withdrawn for
+// the next call, and the exception goes on to the caller.
 template <typename Result, typename Work>
 Result run_interruptible(Work work, const std::function<double()>& fraction,
                          const py::object& progress) {
     std::future<Result> running;
     {
         py::gil_scoped_release unlocked;
-        running = std::async(std::launch::async, work);
+        running = std::async(std::launch::async, std::move(work));
     }
-    bool interrupted = false;
     double shown = -1.0;
-    while (true) {
-        std::future_status status;
+    try {
+        while (true) {
+            std::future_status status;
+            {
+                py::gil_scoped_release unlocked;
+                status = running.wait_for(std::chrono::milliseconds(50));
+            }
+            if (status == std::future_status::ready) break;
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+            if (!progress.is_none() && fraction() != shown) {
+                shown = fraction();
+                progress(shown);
+            }
+        }
+    } catch (...) {
+        request_stop(SIGINT);
         {
             py::gil_scoped_release unlocked;
-            status = running.wait_for(std::chrono::milliseconds(50));
+            running.wait();
         }
-        if (status == std::future_status::ready) break;
-        if (PyErr_CheckSignals() != 0) {
-            interrupted = true;
-            request_stop(SIGINT);
-            break;
-        }
-        if (!progress.is_none() && fraction() != shown) {
-            shown = fraction();
-            progress(shown);
-        }
-    }
-    Result result;
-    {
-        py::gil_scoped_release unlocked;
-        running.wait();
-    }
-    if (interrupted) {
         request_stop(0);  // the next render starts afresh
-        try {
-            running.get();
-        } catch (...) {
-        }
-        throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals set
+        throw;            // the work's own outcome (cut short by the stop) is dropped
     }
-    result = running.get();
+    Result result = running.get();
     if (!progress.is_none() && shown != 1.0) progress(1.0);
     return result;
 }
@@ -295,12 +316,21 @@ py::tuple render(const PyScene& scene, const py::object& progress, const py::kwa
     auto film = std::make_shared<CountingFilm>(camera.width, camera.height);
     const double pixels = static_cast<double>(camera.width) * camera.height;
     const RenderResult result = run_interruptible<RenderResult>(
-        [d, film, threads] { return render_scene(*d, threads, false, film.get()); },
+        [d, film, threads, pixels] {
+            RenderResult r = render_scene(*d, threads, false, film.get());
+            if (film->pixels() != pixels) {
+                throw RenderStopped("rayo.render: stopped by a stop request (Ctrl-C) with " +
+                                    std::to_string(film->pixels()) + " of " +
+                                    std::to_string(static_cast<uint64_t>(pixels)) +
+                                    " pixels rendered");
+            }
+            return r;
+        },
         [film, pixels] { return film->pixels() / pixels; }, progress);
     py::array_t<float> image({camera.height, camera.width, 4});
     const std::vector<float>& rgba = film->film().rgba();
     std::copy(rgba.begin(), rgba.end(), image.mutable_data());
-    return py::make_tuple(image, render_stats(*d, result));
+    return py::make_tuple(image, render_stats(*d, scene.parse_seconds, result));
 }
 
 void write_array(const py::array_t<float, py::array::c_style | py::array::forcecast>& image,
@@ -369,16 +399,12 @@ py::dict error_dict(const ImageError& e) {
     return out;
 }
 
-py::list bench_accuracy(const std::optional<std::string>& output, int size,
-                        const py::object& progress) {
-    std::ostringstream log;
-    const std::vector<AccuracyRow> rows = run_interruptible<std::vector<AccuracyRow>>(
-        [output, size, &log] {
-            std::vector<AccuracyRow> result = run_accuracy_study(log, size);
-            if (output) write_accuracy_files(*output, result, log, size);
-            return result;
-        },
-        [] { return 0.0; }, progress);
+// An integer argument of a study, checked with the bounds and message of its command-line flag.
+int study_int(const char* flag, int value, IntRange range) {
+    return parse_int_flag(flag, std::to_string(value), range);
+}
+
+py::list accuracy_rows(const std::vector<AccuracyRow>& rows) {
     py::list out;
     for (const AccuracyRow& r : rows) {
         py::dict row;
@@ -394,13 +420,67 @@ py::list bench_accuracy(const std::optional<std::string>& output, int size,
     return out;
 }
 
-py::list bench_suite(const std::optional<std::string>& output, int size, int width, int threads,
-                     const std::vector<std::string>& scenes, const py::object& progress) {
+py::list shape_method_rows(const std::vector<ShapeMethodRow>& rows) {
+    py::list out;
+    for (const ShapeMethodRow& r : rows) {
+        py::dict row;
+        row["shape"] = r.shape;
+        row["form"] = r.form;
+        row["budget_px"] = r.budget_px;
+        row["auto"] = r.is_auto;
+        row["triangles"] = r.triangles;
+        row["embree_bytes"] = r.bytes;
+        row["build_seconds"] = r.build_seconds;
+        row["ns_per_ray_coherent"] = r.ns_coherent;
+        row["ns_per_ray_single"] = r.ns_single;
+        row["chord_px"] = r.chord_px;
+        row["max_error_px"] = r.max_error_px;
+        row["silhouette_pct"] = r.silhouette_pct;
+        out.append(row);
+    }
+    return out;
+}
+
+// `rayo bench accuracy`: the sphere-method study and the shape-method study (or the one `only`
+// names, as --only does), each run to the end before any file is written: a Ctrl-C during them
+// leaves no file (bench/lab/study_stop.h).
+py::dict bench_accuracy(const std::optional<std::string>& output, int size,
+                        const std::optional<std::string>& only, const py::object& progress) {
+    study_int("--size", size, kAccuracySizeRange);
+    if (only && *only != "spheres" && *only != "shapes") {
+        throw py::value_error("only: expected 'spheres', 'shapes' or None, got '" + *only + "'");
+    }
+    const bool spheres = only.value_or("spheres") == "spheres";
+    const bool shapes = only.value_or("shapes") == "shapes";
+    struct Tables {
+        std::vector<AccuracyRow> spheres;
+        std::vector<ShapeMethodRow> shapes;
+    };
+    std::ostringstream log;
+    const Tables tables = run_interruptible<Tables>(
+        [output, size, spheres, shapes, &log] {
+            Tables t;
+            if (spheres) t.spheres = run_accuracy_study(log, size);
+            if (shapes) t.shapes = run_shape_method_study(log, size);
+            if (output && spheres) write_accuracy_files(*output, t.spheres, log, size);
+            if (output && shapes) write_shape_method_files(*output, t.shapes, log);
+            return t;
+        },
+        [] { return 0.0; }, progress);
+    py::dict out;
+    if (spheres) out["spheres"] = accuracy_rows(tables.spheres);
+    if (shapes) out["shapes"] = shape_method_rows(tables.shapes);
+    return out;
+}
+
+py::list bench_suite(const std::optional<std::string>& output, int size, int width,
+                     const std::optional<int>& threads, const std::vector<std::string>& scenes,
+                     const py::object& progress) {
     SuiteOptions options;
     if (output) options.dir = *output;
-    options.size = size;
-    options.width = width;
-    options.threads = threads;
+    options.size = study_int("--size", size, kSuiteSizeRange);
+    options.width = study_int("--width", width, kSuiteWidthRange);
+    if (threads) options.threads = study_int("--threads", *threads, kSuiteThreadsRange);
     options.only = scenes;
     std::ostringstream log;
     const std::vector<SuiteRow> rows = run_interruptible<std::vector<SuiteRow>>(
@@ -440,6 +520,16 @@ PYBIND11_MODULE(rayo, m) {
     py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
     // A bad option value: the same message as the command line's for its flag.
     py::register_exception<UsageError>(m, "UsageError", PyExc_ValueError);
+    // A render or study cut short by a stop request (Ctrl-C, here or in another thread).
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const RenderStopped& e) {
+            PyErr_SetString(PyExc_KeyboardInterrupt, e.what());
+        } catch (const StudyStopped& e) {
+            PyErr_SetString(PyExc_KeyboardInterrupt, e.what());
+        }
+    });
 
     py::class_<PyScene>(m, "Scene", "A loaded scene (read-only); rayo.render takes a copy.")
         .def_static(
@@ -456,6 +546,7 @@ PYBIND11_MODULE(rayo, m) {
             py::arg("scene"), py::arg("base_dir") = ".", py::arg("name") = "<dict>",
             "A scene from a dict of rayo's JSON format, validated as a file is.")
         .def_property_readonly("source", [](const PyScene& s) { return s.description->source; })
+        .def_property_readonly("parse_seconds", [](const PyScene& s) { return s.parse_seconds; })
         .def_property_readonly("camera",
                                [](const PyScene& s) { return camera_view(*s.description); })
         .def_property_readonly("counts",
@@ -484,7 +575,8 @@ PYBIND11_MODULE(rayo, m) {
           "rayo.options().");
     m.def("render", &render, py::arg("scene"), py::kw_only(), py::arg("progress") = py::none(),
           "Renders a scene: returns (image, stats), image a float32 array height × width × 4 "
-          "(linear RGBA, as the EXR). Keywords: the render options of rayo.options() (width, "
+          "(linear, premultiplied RGBA, as the EXR). Keywords: the render options of "
+          "rayo.options() (width, "
           "spp, integrator, threads, sphere_method, ...), with the command line's bounds. "
           "progress: called with the fraction done.");
     m.def("write", &write_array, py::arg("image"), py::arg("path"),
@@ -496,12 +588,16 @@ PYBIND11_MODULE(rayo, m) {
     m.def("options", &options_view,
           "Every keyword of rayo.load, rayo.render and rayo.write, with its flag and help.");
     m.def("bench_accuracy", &bench_accuracy, py::arg("output") = py::none(), py::kw_only(),
-          py::arg("size") = kAccuracyImageSize, py::arg("progress") = py::none(),
-          "The sphere-method accuracy study (`rayo bench accuracy`): one dict per scene, method "
+          py::arg("size") = kAccuracyImageSize, py::arg("only") = py::none(),
+          py::arg("progress") = py::none(),
+          "The studies of `rayo bench accuracy`: {'spheres': one dict per scene, sphere method "
           "and precision, with its time and its error against the double-precision reference; "
-          "with output, also its CSV files and charts.");
+          "'shapes': one dict per shape and form (analytic, mesh per error budget) with its "
+          "cost and measured error}; only='spheres' or 'shapes' runs one. With output, also "
+          "their CSV files and charts. size: as --size, in [16, 4096].");
     m.def("bench_suite", &bench_suite, py::arg("output") = py::none(), py::kw_only(),
-          py::arg("size") = 3, py::arg("width") = 512, py::arg("threads") = 0,
+          py::arg("size") = 3, py::arg("width") = 512, py::arg("threads") = py::none(),
           py::arg("scenes") = std::vector<std::string>(), py::arg("progress") = py::none(),
-          "The SPD suite (`rayo bench suite`): one dict per scene; with output, also its files.");
+          "The SPD suite (`rayo bench suite`): one dict per scene; with output, also its files. "
+          "size, width, threads: as the flags, with their bounds; threads None: all cores.");
 }

@@ -13,6 +13,7 @@
 #include "apps/scene/sphere_method_choice.h"
 #include "apps/scene/sphereflake.h"
 #include "bench/lab/sphere_stability.h"
+#include "bench/lab/study_stop.h"
 #include "core/accel.h"
 #include "core/error.h"
 #include "shading/integrators/whitted.h"
@@ -163,6 +164,7 @@ std::vector<AccuracyRow> run_accuracy_study(std::ostream& progress, int size) {
         reference.settings.spheres = *parse_sphere_method("bruteforce");
         reference.settings.sphere_math = SphereMath::Double;
         const RenderResult ref = render_scene(reference, 0, false);
+        stop_study_if_requested("accuracy study");
         const std::vector<uint64_t> ref_ids = primary_ids(reference, ref.spheres);
         const SphereChoice chosen = choose_sphere_method(base, Camera::create(base.scene.camera));
         progress << name << ": reference bruteforce/double in " << std::fixed
@@ -188,6 +190,7 @@ std::vector<AccuracyRow> run_accuracy_study(std::ostream& progress, int size) {
             const int runs = size >= 256 ? 2 : 1;
             for (int run = 0; run < runs; ++run) {
                 result = render_scene(d, 0, false);
+                stop_study_if_requested("accuracy study");
                 row.seconds = std::min(row.seconds, result.bvh_seconds + result.render_seconds);
             }
             row.primitives = result.primitives;
@@ -231,16 +234,18 @@ void write_accuracy_files(const std::string& dir, const std::vector<AccuracyRow>
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) throw InputError(dir, "cannot create the output directory: " + ec.message());
+    // The stability sweep (docs/stability.md): wrong hit/miss rate against distance/radius per
+    // method, as CSV and as one gnuplot data block per method for the chart. It runs before any
+    // file is written, so that a stop during it (Ctrl-C from Python) leaves no file.
+    progress << "stability sweep (distance/radius 1 .. 1e7)\n";
+    const std::vector<StabilityRow> sweep = run_distance_sweep(StabilityConfig{});
+    stop_study_if_requested("stability sweep");
     const std::string csv = dir + "/accuracy.csv";
     {
         std::ofstream out(csv);
         write_accuracy_csv(out, rows);
         if (!out) throw InputError(csv, "cannot write");
     }
-    // The stability sweep (docs/stability.md): wrong hit/miss rate against distance/radius per
-    // method, as CSV and as one gnuplot data block per method for the chart.
-    progress << "stability sweep (distance/radius 1 .. 1e7)\n";
-    const std::vector<StabilityRow> sweep = run_distance_sweep(StabilityConfig{});
     const std::string stability_csv = dir + "/stability.csv";
     const std::string stability_dat = dir + "/stability_chart.dat";
     int series = 0;

@@ -37,7 +37,9 @@ constexpr int kAccuracyImageSize = 384;
 std::vector<std::pair<std::string, SceneDescription>> accuracy_scenes(
     int size = kAccuracyImageSize);
 
-// Runs the whole study; `progress` gets one line per render. Threads: all cores.
+// Runs the whole study; `progress` gets one line per render. Threads: all cores. Throws
+// StudyStopped (bench/lab/study_stop.h) when a stop is requested: a render it cut short would
+// measure blank tiles.
 std::vector<AccuracyRow> run_accuracy_study(std::ostream& progress, int size = kAccuracyImageSize);
 
 void write_accuracy_csv(std::ostream& out, const std::vector<AccuracyRow>& rows);
@@ -47,8 +49,9 @@ void write_accuracy_csv(std::ostream& out, const std::vector<AccuracyRow>& rows)
 void run_accuracy_bench(const std::string& dir, std::ostream& progress,
                         int size = kAccuracyImageSize);
 
-// Writes the study's `rows` (made at `size`) as DIR/accuracy.csv, runs the stability sweep into
-// DIR/stability.csv, writes DIR/charts.gp and runs gnuplot on it.
+// Runs the stability sweep, then writes the study's `rows` (made at `size`) as DIR/accuracy.csv,
+// the sweep as DIR/stability.csv, DIR/charts.gp, and runs gnuplot on it. A stop requested
+// during the sweep throws StudyStopped before any file is written.
 void write_accuracy_files(const std::string& dir, const std::vector<AccuracyRow>& rows,
                           std::ostream& progress, int size = kAccuracyImageSize);
 

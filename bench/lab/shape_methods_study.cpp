@@ -12,6 +12,7 @@
 #include <ostream>
 
 #include "apps/scene/shape_method_choice.h"
+#include "bench/lab/study_stop.h"
 #include "core/accel.h"
 #include "core/error.h"
 
@@ -167,6 +168,7 @@ std::vector<ShapeMethodRow> run_shape_method_study(std::ostream& progress, int s
         std::vector<double> budgets = {0.0};
         for (double b : shape_method_budgets()) budgets.push_back(b);
         for (double budget : budgets) {
+            stop_study_if_requested("shape-method study");
             SceneDescription d = base;
             ShapeMethodRow row;
             row.shape = name;
@@ -238,7 +240,14 @@ void run_shape_method_bench(const std::string& dir, std::ostream& progress, int 
     std::filesystem::create_directories(dir, ec);
     if (ec) throw InputError(dir, "cannot create the output directory: " + ec.message());
     progress << "shape methods: analytic against meshes within error budgets, " << size << "²\n";
-    const std::vector<ShapeMethodRow> rows = run_shape_method_study(progress, size);
+    write_shape_method_files(dir, run_shape_method_study(progress, size), progress);
+}
+
+void write_shape_method_files(const std::string& dir, const std::vector<ShapeMethodRow>& rows,
+                              std::ostream& progress) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw InputError(dir, "cannot create the output directory: " + ec.message());
     const std::string csv = dir + "/shape_methods.csv";
     const std::string dat = dir + "/shape_methods.dat";
     std::vector<std::string> shapes;

@@ -34,14 +34,21 @@ std::vector<std::pair<std::string, SceneDescription>> shape_method_scenes(int si
 // The error budgets of the mesh forms, px.
 const std::vector<double>& shape_method_budgets();
 
-// `repeats`: timing runs per form (the best is kept).
+// `repeats`: timing runs per form (the best is kept). Throws StudyStopped (bench/lab/study_stop.h)
+// when a stop is requested.
 std::vector<ShapeMethodRow> run_shape_method_study(std::ostream& progress, int size,
                                                    int repeats = 7);
 
 void write_shape_method_csv(std::ostream& out, const std::vector<ShapeMethodRow>& rows);
 
-// Writes DIR/shape_methods.csv, DIR/shape_methods.dat and DIR/shape_methods.gp and runs
-// gnuplot on it (charts shape_methods_time and shape_methods_memory, PNG and SVG).
+// Runs the study, then write_shape_method_files. Throws InputError when DIR cannot be written
+// or gnuplot fails.
 void run_shape_method_bench(const std::string& dir, std::ostream& progress, int size);
+
+// Writes the study's `rows` as DIR/shape_methods.csv, DIR/shape_methods.dat and
+// DIR/shape_methods.gp and runs gnuplot on it (charts shape_methods_time and
+// shape_methods_memory, PNG and SVG).
+void write_shape_method_files(const std::string& dir, const std::vector<ShapeMethodRow>& rows,
+                              std::ostream& progress);
 
 }  // namespace rayo

@@ -14,6 +14,7 @@
 #include "apps/scene/renderer.h"
 #include "bench/lab/spd_povray.h"
 #include "bench/lab/spd_scenes.h"
+#include "bench/lab/study_stop.h"
 #include "core/error.h"
 
 namespace rayo {
@@ -142,6 +143,7 @@ std::vector<SuiteRow> run_spd_suite(const SuiteOptions& options, std::ostream& p
         d.scene.camera.width = d.scene.camera.height = options.width;
         row.generate_seconds = seconds_since(start);
         const RenderResult r = render_scene(d, options.threads, false);
+        stop_study_if_requested("SPD suite");
         row.threads = r.threads;
         row.primitives = r.primitives;
         row.rays = r.counters;

@@ -42,7 +42,8 @@ struct SuiteRow {
 };
 
 // Renders every scene, one progress line each. Throws InputError for a bad scene name or size,
-// or when --povray is asked for and POV-Ray cannot run.
+// or when --povray is asked for and POV-Ray cannot run; StudyStopped (bench/lab/study_stop.h)
+// when a stop is requested.
 std::vector<SuiteRow> run_spd_suite(const SuiteOptions& options, std::ostream& progress);
 
 // The aligned table printed at the end of a run (and, as Markdown, in suite.md).

@@ -8,6 +8,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "bench/lab/study_stop.h"
 #include "core/shapes/quadric.h"
 #include "core/shapes/quadric_forms.h"
 
@@ -393,6 +394,7 @@ std::vector<StabilityRow> run_distance_sweep(const StabilityConfig& c) {
     std::vector<StabilityRow> rows;
     uint32_t index = 0;
     for (double d : c.distance_ratios) {
+        stop_study_if_requested("stability sweep");
         StabilityCase s = base_case(c, index++);
         s.pattern = RayPattern::Disk;
         s.distance_ratio = d;

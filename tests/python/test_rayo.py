@@ -5,6 +5,7 @@ build's python/ folder and RAYO_CLI to the rayo executable (CMakeLists.txt)."""
 import math
 import os
 import signal
+import struct
 import subprocess
 import sys
 import textwrap
@@ -87,6 +88,43 @@ def test_load_reads_every_format_the_cli_reads(tmp_path):
         assert image.shape[1] == 16 and image.shape[2] == 4
     # The built-in scene without a path, as `rayo render` without a scene.
     assert rayo.load().source == "<default>"
+
+
+def glb(positions):
+    """A binary glTF (GLB) of one triangle: the JSON chunk, then the positions in the BIN chunk."""
+    data = struct.pack("<9f", *positions)
+    lo = [min(positions[i::3]) for i in range(3)]
+    hi = [max(positions[i::3]) for i in range(3)]
+    gltf = ('{"asset": {"version": "2.0"}, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],'
+            ' "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],'
+            ' "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",'
+            f' "min": {lo}, "max": {hi}}}],'
+            ' "bufferViews": [{"buffer": 0, "byteLength": 36}],'
+            ' "buffers": [{"byteLength": 36}]}').encode()
+    gltf += b" " * (-len(gltf) % 4)
+    chunks = (struct.pack("<II", len(gltf), 0x4E4F534A) + gltf +
+              struct.pack("<II", len(data), 0x004E4942) + data)
+    return struct.pack("<III", 0x46546C67, 2, 12 + len(chunks)) + chunks
+
+
+def test_load_reads_a_binary_gltf(tmp_path):
+    path = tmp_path / "t.glb"
+    path.write_bytes(glb([0, 0, 0, 2, 0, 0, 0, 1, 0]))
+    scene = rayo.load(str(path), no_ground=True)
+    assert scene.counts["triangles"] == 1 and scene.counts["vertices"] == 3
+    (lo, hi) = scene.bounds
+    assert lo[0] == pytest.approx(0) and hi[0] == pytest.approx(2) and hi[1] == pytest.approx(1)
+    info = cli("info", str(path)).stdout
+    assert "triangles 1\n" in info and "vertices 3\n" in info
+    image, _ = rayo.render(scene, width=16)
+    assert image[..., 3].max() == 1.0  # the triangle is framed: some pixels see it
+    # A GLB cut short is refused with the file's name, as the CLI refuses it.
+    (tmp_path / "cut.glb").write_bytes(path.read_bytes()[:-8])
+    with pytest.raises(rayo.InputError) as e:
+        rayo.load(str(tmp_path / "cut.glb"))
+    assert "cut.glb" in str(e.value)
+    r = cli("info", str(tmp_path / "cut.glb"))
+    assert r.returncode == 1 and r.stderr == f"rayo: error: {e.value}\n"
 
 
 def test_a_scene_shows_what_it_holds_as_rayo_info_does(tmp_path):
@@ -205,6 +243,34 @@ def test_stats_say_what_ran():
         "camera", "shadow", "shadow_filtered", "reflection", "refraction"))
     assert stats["rays"]["camera"] == 32 * 24
     assert stats["render_seconds"] > 0 and stats["mrays_per_second"] > 0
+    assert stats["parse_seconds"] > 0 and stats["shape_methods"] == []
+
+
+def cli_stats_lines(label, *args):
+    r = cli("render", *args, "--stats", "--quiet", "-o", os.devnull + ".exr")
+    prefix = "  " + label
+    return [line[len(prefix):].strip() for line in r.stderr.splitlines() + r.stdout.splitlines()
+            if line.startswith(prefix)]
+
+
+def test_stats_give_the_shape_methods_and_the_parse_time_as_rayo_render_stats_does(tmp_path):
+    # The objects' methods (--shape-method mesh), and the reader's choices (height fields left
+    # to "auto").
+    with open(os.path.join(REPO, "scenes", "heightfield.json")) as f:
+        text = f.read()
+    text = text.replace('"method": "dda"', '"method": "auto"').replace(
+        '"method": "mesh"', '"method": "auto"').replace(
+        "data/island.png", os.path.join(REPO, "scenes", "data", "island.png"))
+    scenes = [(os.path.join(REPO, "scenes", "cornell_shapes.json"), {"shape_method": "mesh"},
+               ["--shape-method", "mesh"]),
+              (write(tmp_path / "auto.json", text), {}, [])]
+    for path, keywords, flags in scenes:
+        scene = rayo.load(path)
+        assert scene.parse_seconds > 0
+        _, stats = rayo.render(scene, width=24, **keywords)
+        assert stats["parse_seconds"] == scene.parse_seconds
+        expected = cli_stats_lines("shape method", path, "--width", "24", *flags)
+        assert expected and stats["shape_methods"] == expected, path
 
 
 # --- closed forms -------------------------------------------------------------------------------
@@ -326,6 +392,63 @@ def test_ctrl_c_stops_a_render_promptly_and_raises_keyboard_interrupt(tmp_path):
     assert "interrupted" in out and "then (12, 16, 4)" in out
 
 
+def test_a_progress_callback_that_raises_stops_the_render_and_the_next_runs_whole():
+    calls = []
+
+    def fails(fraction):
+        calls.append(fraction)
+        raise ValueError("callback broke")
+
+    scene = rayo.load(GLASS)
+    start = time.monotonic()
+    with pytest.raises(ValueError, match="callback broke"):
+        # Minutes of work if it were not stopped.
+        rayo.render(scene, width=4000, spp=64, progress=fails)
+    assert time.monotonic() - start < 10
+    assert len(calls) == 1
+    image, _ = rayo.render(scene, width=32)  # the stop request was withdrawn
+    assert np.array_equal(image, rayo.render(scene, width=32)[0])
+    assert image[..., 3].min() == 1.0
+
+
+def test_a_render_cut_short_by_another_threads_ctrl_c_raises_instead_of_returning(tmp_path):
+    # The stop request is one for the process (core/stop_request.h): Ctrl-C during the main
+    # thread's render stops the other thread's too, which must raise, not return a part-black
+    # image. The other's tiles (4 spp) take a small part of the main render's (256 spp), whose
+    # tiles in flight keep the request up long enough for the other to see it.
+    script = write(tmp_path / "two.py", textwrap.dedent(f"""\
+        import sys, threading, rayo
+        scene = rayo.load({GLASS!r})
+        other_started = threading.Event()
+        outcome = []
+        def other():
+            try:
+                rayo.render(scene, width=3000, spp=4,
+                            progress=lambda f: other_started.set())
+                outcome.append("returned")
+            except KeyboardInterrupt as e:
+                outcome.append("raised " + str(e))
+        t = threading.Thread(target=other)
+        t.start()
+        other_started.wait()
+        def started(fraction):
+            print("started", flush=True)
+        try:
+            rayo.render(scene, width=3000, spp=256, progress=started)
+        except KeyboardInterrupt:
+            print("interrupted", flush=True)
+        t.join()
+        print("other", outcome[0], flush=True)
+        """))
+    p = subprocess.Popen([sys.executable, script], stdout=subprocess.PIPE, text=True)
+    assert p.stdout.readline() == "started\n"
+    p.send_signal(signal.SIGINT)
+    out, _ = p.communicate(timeout=60)
+    assert p.returncode == 0, out
+    assert "interrupted\n" in out
+    assert "other raised rayo.render: stopped by a stop request (Ctrl-C) with " in out, out
+
+
 # --- studies ------------------------------------------------------------------------------------
 
 def test_the_studies_return_their_tables(tmp_path):
@@ -335,11 +458,75 @@ def test_the_studies_return_their_tables(tmp_path):
     assert os.path.exists(tmp_path / "suite" / "suite.csv")
     with pytest.raises(rayo.InputError):
         rayo.bench_suite(scenes=["nonesuch"], width=8)
-    rows = rayo.bench_accuracy(str(tmp_path / "accuracy"), size=24)
+    # `rayo bench accuracy`: both studies, and the files of both (as the CLI writes them).
+    tables = rayo.bench_accuracy(str(tmp_path / "accuracy"), size=16)
+    rows = tables["spheres"]
     assert {r["method"] for r in rows} >= {"user", "bruteforce", "embree-point", "mesh:3"}
     doubles = [r for r in rows if r["math"] == "double"]
     assert doubles and all(r["rmse"] == 0.0 for r in doubles)
-    assert os.path.exists(tmp_path / "accuracy" / "accuracy.csv")
+    shapes = tables["shapes"]
+    analytic = [r for r in shapes if r["form"] == "analytic"]
+    meshes = [r for r in shapes if r["form"] == "mesh"]
+    assert analytic and meshes and {r["shape"] for r in analytic} == {r["shape"] for r in meshes}
+    assert all(r["triangles"] > 0 and r["budget_px"] > 0 for r in meshes)
+    assert all(r["max_error_px"] == 0 and r["silhouette_pct"] == 0 for r in analytic)
+    written = set(os.listdir(tmp_path / "accuracy"))
+    assert {"accuracy.csv", "stability.csv", "charts.gp", "shape_methods.csv",
+            "shape_methods.gp", "shape_methods_time.png"} <= written
+    with open(tmp_path / "accuracy" / "shape_methods.csv") as f:
+        assert len(f.read().splitlines()) == 1 + len(shapes)
+    only = rayo.bench_accuracy(size=16, only="shapes")
+    assert list(only) == ["shapes"] and len(only["shapes"]) == len(shapes)
+
+
+def test_study_arguments_have_the_clis_bounds_and_messages(tmp_path):
+    out = str(tmp_path / "x")
+    cases = [(rayo.bench_suite, {"size": 0}, ["suite", "--size", "0"]),
+             (rayo.bench_suite, {"size": 65}, ["suite", "--size", "65"]),
+             (rayo.bench_suite, {"width": 1}, ["suite", "--width", "1"]),
+             (rayo.bench_suite, {"width": 16385}, ["suite", "--width", "16385"]),
+             (rayo.bench_suite, {"threads": 0}, ["suite", "--threads", "0"]),
+             (rayo.bench_suite, {"threads": 4097}, ["suite", "--threads", "4097"]),
+             (rayo.bench_accuracy, {"size": 15}, ["accuracy", "-o", out, "--size", "15"]),
+             (rayo.bench_accuracy, {"size": 4097}, ["accuracy", "-o", out, "--size", "4097"])]
+    for function, keywords, args in cases:
+        with pytest.raises(ValueError) as e:
+            function(out, **keywords)
+        assert isinstance(e.value, (rayo.UsageError, rayo.InputError))
+        r = cli("bench", *args)
+        assert r.returncode == 2 and r.stderr == f"rayo: error: {e.value}\n", keywords
+    with pytest.raises(ValueError, match="only: expected 'spheres', 'shapes' or None, got 'cubes'"):
+        rayo.bench_accuracy(out, only="cubes")
+    assert not os.path.exists(out)
+
+
+@pytest.mark.parametrize("study", ["bench_accuracy(out, size=256)",
+                                   "bench_accuracy(out, size=512, only='shapes')",
+                                   "bench_suite(out, size=3, width=1024)"])
+def test_ctrl_c_stops_a_study_raises_keyboard_interrupt_and_writes_no_file(tmp_path, study):
+    out = str(tmp_path / "out")
+    script = write(tmp_path / "study.py", textwrap.dedent(f"""\
+        import sys, rayo
+        out = {out!r}
+        def started(fraction):
+            print("started", flush=True)
+        try:
+            rayo.{study.replace(")", ", progress=started)")}
+        except KeyboardInterrupt:
+            print("interrupted", flush=True)
+            image, _ = rayo.render(rayo.load({GLASS!r}), width=16)  # the next render runs whole
+            print("then", image[..., 3].min(), flush=True)
+            sys.exit(3)
+        """))
+    p = subprocess.Popen([sys.executable, script], stdout=subprocess.PIPE, text=True)
+    assert p.stdout.readline() == "started\n"
+    sent = time.monotonic()
+    p.send_signal(signal.SIGINT)
+    out_text, _ = p.communicate(timeout=120)
+    assert p.returncode == 3, out_text
+    assert time.monotonic() - sent < 10
+    assert "interrupted\n" in out_text and "then 1.0\n" in out_text
+    assert not os.path.exists(out) or os.listdir(out) == []
 
 
 def test_the_documented_example_script_runs(tmp_path):
