@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/ray.h"
+#include "core/setting.h"
 
 namespace rayo {
 
@@ -23,6 +24,12 @@ const char* projection_name(Projection projection);
 
 // The fisheye's full angle of the image circle is in (0°, kMaxFisheyeFov].
 constexpr float kMaxFisheyeFov = 360.0f;
+
+// Largest accepted image: 65536 pixels a side (docs/limits.md, "Resolution"): film positions are
+// floats, which at x = 65536 (2^16) still place samples on a 1/256-pixel lattice, and tile and
+// pixel indices stay far inside int and size_t. Images above kMaxFilmPixels (core/film.h) are
+// rendered only by streaming to a file (core/image/tile_stream.h).
+constexpr int kMaxImageSide = 65536;
 
 struct CameraDesc {
     Vec3 eye{0.0f, 0.0f, 5.0f};
@@ -46,13 +53,16 @@ struct CameraDesc {
     // eye–look_at distance).
     float lens_radius = 0.0f;
     std::optional<float> focus_distance;
-};
 
-// Largest accepted image: 65536 pixels a side (docs/limits.md, "Resolution"): film positions are
-// floats, which at x = 65536 (2^16) still place samples on a 1/256-pixel lattice, and tile and
-// pixel indices stay far inside int and size_t. Images above kMaxFilmPixels (core/film.h) are
-// rendered only by streaming to a file (core/image/tile_stream.h).
-constexpr int kMaxImageSide = 65536;
+    // The image size, declared once (core/setting.h): the scene reader's "camera": {"width",
+    // "height"} and the command line's --width/--height are checked by these bounds, in the
+    // same words.
+    template <typename F>
+    void resolution_fields(F& f) {
+        f.integer({"width", "image width in pixels"}, width, 1, kMaxImageSide);
+        f.integer({"height", "image height in pixels"}, height, 1, kMaxImageSide);
+    }
+};
 
 class Camera {
   public:

@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 
+#include "core/setting.h"
+
 namespace rayo {
 
 enum class ShapeMethod {
@@ -15,6 +17,11 @@ enum class ShapeMethod {
     Mesh,      // Embree triangles within the chord error `--max-error-px` projects to
     Auto,      // chosen per object (apps/scene/shape_method_choice.h); never reaches Accel
 };
+
+// The methods by name, declared once: --shape-method and an object's "method" both read them
+// (read_choice, core/setting.h), and --help lists them from here.
+inline const std::initializer_list<Choice<ShapeMethod>> kShapeMethodChoices = {
+    {"analytic", ShapeMethod::Analytic}, {"mesh", ShapeMethod::Mesh}, {"auto", ShapeMethod::Auto}};
 
 // "analytic", "mesh", "auto"; nullopt if the text is none of these.
 std::optional<ShapeMethod> parse_shape_method(const std::string& text);

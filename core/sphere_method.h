@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "core/setting.h"
 #include "core/shapes/sphere.h"
 
 namespace rayo {
@@ -33,6 +34,12 @@ inline long long icosphere_triangles(int level) {
 // "bruteforce", "user", "embree-point", "mesh:N" (N in 0..kMaxMeshLevel), "auto"; nullopt if
 // the text is none of these.
 std::optional<SphereRepresentation> parse_sphere_method(const std::string& text);
+// What a sphere method is, as --help and the messages say it: one of "auto", "user",
+// "bruteforce", "embree-point", "mesh:N" (N in 0..7).
+std::string sphere_method_expectation();
+// The check of --sphere-method and of "render": {"sphere_method"} (core/setting.h's form, one
+// reader for both): sets `out` (its mesh_smooth kept), or says what was expected.
+std::optional<std::string> read_sphere_method(const SettingValue& value, SphereRepresentation& out);
 std::string sphere_method_name(const SphereRepresentation& r);
 
 // "seed", "stable", "double".

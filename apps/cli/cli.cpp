@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -22,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include "apps/cli/int_flag.h"
+#include "apps/cli/flag_table.h"
 #include "apps/cli/render_options.h"
 #include "apps/cli/setting_flags.h"
 #include "apps/cli/usage_error.h"
@@ -35,6 +38,7 @@
 #include "apps/scene/scene_loader.h"
 #include "bench/lab/accuracy_bench.h"
 #include "bench/lab/shape_methods_study.h"
+#include "bench/lab/spd_scenes.h"
 #include "bench/lab/spd_suite.h"
 #include "core/error.h"
 #include "core/image/image_output.h"
@@ -67,9 +71,9 @@ usage:
                                   lights when it has them, else framed automatically); the
                                   built-in scene without one
   rayo info SCENE                 load SCENE and print what it contains
-  rayo bench accuracy -o DIR [--size N] [--only spheres|shapes]
+  rayo bench accuracy -o DIR [options]
                                   the sphere- and shape-method studies: CSV and charts
-                                  (gnuplot) in DIR, scenes of N×N pixels [384]
+                                  (gnuplot) in DIR
   rayo bench suite [options]      the seven SPD scenes as a benchmark: a table, and with -o DIR
                                   suite.csv/.json/.md and a chart (docs/performance.md)
   rayo texture NAME [options]     write a procedural texture flat (the plane z = 0)
@@ -115,39 +119,10 @@ const char* const kInfoHelp = R"(usage: rayo info SCENE
 
 )";
 
-const char* const kBenchHelp =
-    R"(usage: rayo bench accuracy -o DIR [--size N] [--only spheres|shapes]
-       rayo bench suite [options]
-
-bench accuracy options (docs/stability.md, docs/shape-methods.md):
-  -o, --output DIR         write the CSV files and charts (gnuplot) there (required)
-  --size N                 scenes of N×N pixels [384]
-  --only spheres|shapes    only the sphere-method or the shape-method study
-
-bench suite options:
-  -o, --output DIR         write the files there (and --povray's scenes and logs)
-  --size N                 SPD size of every scene [3]
-  --width W                images of W×W pixels [512]
-  --threads N              worker threads [all cores]
-  --scenes A,B             only these of balls,gears,mount,rings,teapot,tetra,tree
-  --povray                 also time POV-Ray 3.7 on the same scenes (its files in DIR, or
-                           in a temporary folder without -o)
-  --write-nff              write DIR/NAME_SIZE.nff for each scene instead of rendering
-
-)";
-
-const char* const kTextureHelp = R"(usage: rayo texture NAME [options]
-  write a procedural texture flat (the plane z = 0)
-
-texture NAME is one of (docs/textures.md):
-  @TEXTURE_KINDS@
-texture options:
-  -o, --output FILE        output image, as for render [NAME.png]
-  --size WxH               image size in pixels [512x512]; 64 pixels per world unit
-  --scale S                world units per feature, 1e-6..1e6 [1: the seed's 64-pixel cells]
-  --seed N                 0..2147483647 [0]
-
-)";
+// `rayo bench --help` and `rayo texture --help`: written from their flag tables
+// (kAccuracyFlags, kSuiteFlags, kTextureFlags, below).
+std::string bench_help();
+std::string texture_help();
 
 const char* const kPreviewHelp = R"(usage: rayo preview [SCENE] [options]
   draw every object's outline from SCENE's camera, in well under a second: framing before a
@@ -168,57 +143,30 @@ std::string usage() {
 }
 
 // `rayo COMMAND --help`: the command's usage and flags (the inputs too for commands that read a
-// scene); the texture kinds filled in from their one list (shading/texture.h).
+// scene).
 std::string command_help(const std::string& command) {
     if (command == "render") return render_help() + "\n" + kInputs + kOcioNote;
     if (command == "info") return std::string(kInfoHelp) + kInputs;
-    if (command == "bench") return kBenchHelp;
+    if (command == "bench") return bench_help();
     if (command == "preview") return std::string(kPreviewHelp) + kInputs + kOcioNote;
-    if (command == "texture") {
-        std::string text = kTextureHelp;
-        const std::string slot = "@TEXTURE_KINDS@";
-        return text.replace(text.find(slot), slot.size(), texture_kind_list()) + kOcioNote;
-    }
+    if (command == "texture") return texture_help() + kOcioNote;
     return usage();  // an unknown command: the overview
 }
 
-int parse_int(const std::string& flag, const std::string& text, int min_value, int max_value) {
-    int value = 0;
-    const char* end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    if (ec != std::errc() || ptr != end || value < min_value || value > max_value) {
-        throw UsageError(flag + ": expected an integer in [" + std::to_string(min_value) + ", " +
-                         std::to_string(max_value) + "], got '" + text + "'");
-    }
-    return value;
-}
-
-// A number in [min_value, max_value] (finite), or a UsageError naming the flag.
-double parse_number(const std::string& flag, const std::string& text, double min_value,
-                    double max_value) {
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) ||
-        value < min_value || value > max_value) {
-        std::ostringstream expected;
-        expected << flag << ": expected a number in [" << min_value << ", " << max_value
-                 << "], got '" << text << "'";
-        throw UsageError(expected.str());
-    }
-    return value;
+// What --view-dir takes, for its help and its refusal.
+std::string direction_expectation() {
+    return "a direction X,Y,Z of finite numbers, not all zero";
 }
 
 // "X,Y,Z": a direction of three finite numbers, not all zero.
-Vec3 parse_direction(const std::string& flag, const std::string& text) {
+Vec3 parse_direction(const FlagValue& value) {
     Vec3 v(0.0f);
-    std::istringstream in(text);
+    std::istringstream in(value.text);
     char comma1 = 0, comma2 = 0;
     in >> v.x >> comma1 >> v.y >> comma2 >> v.z;
     if (!in || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() || !std::isfinite(v.x) ||
         !std::isfinite(v.y) || !std::isfinite(v.z) || v == Vec3(0.0f)) {
-        throw UsageError(flag +
-                         ": expected a direction X,Y,Z of finite numbers, not all zero, got '" +
-                         text + "'");
+        refuse_flag(value, "expected " + direction_expectation() + ", got '" + value.text + "'");
     }
     return v;
 }
@@ -266,206 +214,186 @@ struct RenderArgs {
 };
 
 // One option of `rayo render` besides the declared settings (apps/cli/setting_flags.h): its
-// spelling, the name of its value (none: a switch), its help and what it does. `rayo render
-// --help` and parse_render_args both read this one list, in its order. An entry without `apply`
-// places a declared setting's help (from its declaration); one without `help` shares the
-// previous entry's line ("--width W, --height H").
+// spelling, the name of its value, its help, its default, its rule (bounds or choices) and what
+// it does. `rayo render --help` (flags_help), parse_render_args and the refusals of bad values
+// (read_flag_value) all read this one list, in its order (apps/cli/flag_table.h). An entry
+// without `apply` places a declared setting's help (from its declaration); one without `help`
+// shares the previous entry's line ("--width W, --height H").
 struct RenderOption {
     const char* flag;
     OptionUse use = OptionUse::Render;  // a declared setting's: Render
     const char* value_name = nullptr;
     const char* help = nullptr;
-    void (*apply)(RenderArgs&, const std::string& flag, const std::string& value) = nullptr;
+    const char* default_value = nullptr;
+    FlagRule rule = switch_rule();
+    void (*apply)(RenderArgs&, const FlagValue&) = nullptr;
     const char* alias = nullptr;  // "-o"
 };
 
-// A choice between spellings for the options whose values are words.
-template <typename T>
-T word_choice(const std::string& flag, const std::string& text,
-              std::initializer_list<std::pair<const char*, T>> choices) {
-    std::string names;
-    for (const auto& [name, value] : choices) {
-        if (text == name) return value;
-        names += std::string(names.empty() ? "'" : "' or '") + name;
-    }
-    throw UsageError(flag + ": expected " + names + "', got '" + text + "'");
+// The most worker threads a command takes (render, preview, bench suite).
+constexpr int kMaxThreads = 4096;
+
+// --width/--height (and texture's --size) take the bounds of "camera": {"width", "height"}
+// from their declaration (CameraDesc::resolution_fields), so flag and field refuse alike.
+FlagRule resolution_rule(const char* name) {
+    RuleFinder finder{name};
+    CameraDesc().resolution_fields(finder);
+    return *finder.rule;
+}
+
+const std::initializer_list<Choice<bool>> kGiViewChoices = {{"smooth", false}, {"patches", true}};
+const std::initializer_list<Choice<RangeMode>> kRangeChoices = {
+    {"clamp", RangeMode::Clamp}, {"normalize", RangeMode::Normalize}};
+
+// A value of a Words rule, once read_flag_value has passed it.
+template <typename E>
+E chosen(std::initializer_list<Choice<E>> choices, const FlagValue& v) {
+    E value{};
+    refuse_flag(v, read_choice(SettingValue::from_text(v.text), choices, value));
+    return value;
 }
 
 const RenderOption kRenderOptions[] = {
     {"--output", OptionUse::Command, "FILE",
-     "output image: .exr (linear float), .png, .tif, .jpg (display view) [default: SCENE's name "
-     "with .png, or default.png]",
-     [](RenderArgs& r, const std::string&, const std::string& v) { r.output = v; }, "-o"},
+     "output image: .exr (linear float), .png, .tif, .jpg (display view)",
+     "default: SCENE's name with .png, or default.png", text_rule(),
+     [](RenderArgs& r, const FlagValue& v) { r.output = v.text; }, "-o"},
     {"--width", OptionUse::Render, "W", "resolution (one alone keeps the scene's aspect ratio)",
-     [](RenderArgs& r, const std::string& f, const std::string& v) {
-         r.width = parse_int(f, v, 1, kMaxImageSide);
-     }},
-    {"--height", OptionUse::Render, "H", nullptr,
-     [](RenderArgs& r, const std::string& f, const std::string& v) {
-         r.height = parse_int(f, v, 1, kMaxImageSide);
-     }},
+     nullptr, resolution_rule("width"),
+     [](RenderArgs& r, const FlagValue& v) { r.width = v.integer; }},
+    {"--height", OptionUse::Render, "H", nullptr, nullptr, resolution_rule("height"),
+     [](RenderArgs& r, const FlagValue& v) { r.height = v.integer; }},
     {"--spp"},
-    {"--threads", OptionUse::Render, "N", "worker threads [all cores]",
-     [](RenderArgs& r, const std::string& f, const std::string& v) {
-         r.threads = parse_int(f, v, 1, 4096);
-     }},
-    {"--nff-light-intensity", OptionUse::Load, "X",
-     "intensity of each NFF light without a colour, a number >= 0 [1/sqrt(number of lights), the "
-     "SPD's rule; 1 gives unit lights]",
-     [](RenderArgs& r, const std::string& f, const std::string& v) {
-         r.load_options.nff.light_intensity = static_cast<float>(parse_number(f, v, 0.0, 1e30));
-     }},
+    {"--threads", OptionUse::Render, "N", "worker threads", "all cores",
+     integer_rule(1, kMaxThreads),
+     [](RenderArgs& r, const FlagValue& v) { r.threads = v.integer; }},
+    {"--nff-light-intensity", OptionUse::Load, "X", "intensity of each NFF light without a colour",
+     "1/sqrt(number of lights), the SPD's rule; 1 gives unit lights", real_rule(0.0, 1e30),
+     [](RenderArgs& r, const FlagValue& v) { r.load_options.nff.light_intensity = v.number; }},
     {"--view-dir", OptionUse::Load, "X,Y,Z",
-     "model files: the direction from the model's centre to the eye [0.6,0.45,1: front, right, "
-     "above; +y is up]",
-     [](RenderArgs& r, const std::string& f, const std::string& v) {
-         r.load_options.model.view_direction = parse_direction(f, v);
+     "model files: the direction from the model's centre to the eye",
+     "0.6,0.45,1: front, right, above; +y is up", custom_rule(direction_expectation),
+     [](RenderArgs& r, const FlagValue& v) {
+         r.load_options.model.view_direction = parse_direction(v);
      }},
     {"--no-ground", OptionUse::Load, nullptr, "model files: no ground square under the model",
-     [](RenderArgs& r, const std::string&, const std::string&) {
-         r.load_options.model.ground = false;
-     }},
+     nullptr, switch_rule(),
+     [](RenderArgs& r, const FlagValue&) { r.load_options.model.ground = false; }},
     {"--camera", OptionUse::Load, "NAME|INDEX",
      "glTF files: the camera to use, by name or by its index in `rayo info`'s list, or auto (the "
-     "automatic framing) [the file's first camera, else auto; --view-dir alone chooses auto]",
-     [](RenderArgs& r, const std::string&, const std::string& v) {
-         r.load_options.model.camera = v;
-     }},
+     "automatic framing)",
+     "the file's first camera, else auto; --view-dir alone chooses auto", text_rule(),
+     [](RenderArgs& r, const FlagValue& v) { r.load_options.model.camera = v.text; }},
     {"--auto-lights", OptionUse::Load, nullptr,
      "model files: add the automatic key and fill lights even when the file has lights "
      "(KHR_lights_punctual) or emissive surfaces",
-     [](RenderArgs& r, const std::string&, const std::string&) {
-         r.load_options.model.auto_lights = true;
-     }},
+     nullptr, switch_rule(),
+     [](RenderArgs& r, const FlagValue&) { r.load_options.model.auto_lights = true; }},
     {"--no-instances", OptionUse::Load, nullptr,
      "glTF files: flatten meshes that several nodes use instead of keeping them once as "
      "instances",
-     [](RenderArgs& r, const std::string&, const std::string&) {
-         r.load_options.model.instances = false;
-     }},
+     nullptr, switch_rule(),
+     [](RenderArgs& r, const FlagValue&) { r.load_options.model.instances = false; }},
     {"--environment", OptionUse::Load, "FILE",
      "an equirectangular image (HDR expected: .exr, .hdr) as the environment light, in place of "
      "the scene's; model files get no automatic lights with it (docs/path-tracing.md)",
-     [](RenderArgs& r, const std::string&, const std::string& v) {
-         r.environment = v;
+     nullptr, text_rule(),
+     [](RenderArgs& r, const FlagValue& v) {
+         r.environment = v.text;
          r.load_options.model.environment_lit = true;
      }},
     {"--restrict-paths", OptionUse::Load, nullptr,
      "files the scene references (meshes, material libraries, glTF buffers) must lie in the "
      "scene's folder tree (untrusted scenes)",
-     [](RenderArgs& r, const std::string&, const std::string&) {
-         r.load_options.restrict_paths = true;
-     }},
+     nullptr, switch_rule(),
+     [](RenderArgs& r, const FlagValue&) { r.load_options.restrict_paths = true; }},
     {"--tile-size"},
     {"--sphere-method", OptionUse::Render, "M",
-     "auto (default), user, bruteforce, embree-point, mesh:N (N 0..7: 20·4^N triangles per "
-     "sphere)",
-     [](RenderArgs& r, const std::string& f, const std::string& v) {
-         r.sphere_method = parse_sphere_method(v);
-         if (!r.sphere_method) {
-             throw UsageError(f +
-                              ": expected auto, user, bruteforce, embree-point or mesh:N (N in "
-                              "0.." +
-                              std::to_string(kMaxMeshLevel) + "), got '" + v + "'");
-         }
+     "how spheres reach the hot path, as the scene's \"sphere_method\" (mesh:N: 20·4^N "
+     "triangles per sphere; docs/sphere-methods.md)",
+     "scene's, default auto", custom_rule(sphere_method_expectation),
+     [](RenderArgs& r, const FlagValue& v) {
+         SphereRepresentation method;
+         refuse_flag(v, read_sphere_method(SettingValue::from_text(v.text), method));
+         r.sphere_method = method;
      }},
     {"--sphere-math"},
     {"--max-error-px", OptionUse::Render, "E",
-     "auto's error budget in pixels [0.5]; the chord error of mesh shapes (--shape-method)",
-     [](RenderArgs& r, const std::string& f, const std::string& v) {
-         r.max_error_px = static_cast<float>(parse_number(f, v, 1e-6, 1e6));
-     }},
-    {"--shape-method", OptionUse::Render, "M",
-     "analytic, mesh or auto: the method of every object with a mesh form (not spheres), over the "
-     "scene's per-object \"method\" [each object's, default analytic; docs/shape-methods.md]",
-     [](RenderArgs& r, const std::string& f, const std::string& v) {
-         r.shape_method = parse_shape_method(v);
-         if (!r.shape_method) {
-             throw UsageError(f + ": expected 'analytic', 'mesh' or 'auto', got '" + v + "'");
-         }
-     }},
+     "auto's error budget in pixels; the chord error of mesh shapes (--shape-method)", "0.5",
+     real_rule(1e-6, 1e6), [](RenderArgs& r, const FlagValue& v) { r.max_error_px = v.number; }},
+    {"--shape-method", OptionUse::Render, nullptr,
+     "the method of every object with a mesh form (not spheres), over the scene's per-object "
+     "\"method\" (the same names; docs/shape-methods.md)",
+     "each object's, default analytic", words_rule(choice_words<kShapeMethodChoices>),
+     [](RenderArgs& r, const FlagValue& v) { r.shape_method = chosen(kShapeMethodChoices, v); }},
     {"--flat-spheres", OptionUse::Render, nullptr,
-     "mesh:N spheres with flat facets instead of smooth normals",
-     [](RenderArgs& r, const std::string&, const std::string&) { r.flat_spheres = true; }},
+     "mesh:N spheres with flat facets instead of smooth normals", nullptr, switch_rule(),
+     [](RenderArgs& r, const FlagValue&) { r.flat_spheres = true; }},
     {"--single-rays", OptionUse::Render, nullptr,
      "trace camera and shadow rays one by one instead of as coherent Embree streams per tile "
      "(same image; for comparisons)",
-     [](RenderArgs& r, const std::string&, const std::string&) { r.single_rays = true; }},
+     nullptr, switch_rule(), [](RenderArgs& r, const FlagValue&) { r.single_rays = true; }},
     {"--aa"},
     {"--aa-threshold"},
     {"--aa-depth"},
     {"--gi"},
-    {"--gi-view", OptionUse::Render, "V",
-     "radiosity: smooth (vertex colours, default) or patches (flat)",
-     [](RenderArgs& r, const std::string& f, const std::string& v) {
-         r.gi_view_patches = word_choice<bool>(f, v, {{"smooth", false}, {"patches", true}});
-     }},
+    {"--gi-view", OptionUse::Render, nullptr,
+     "radiosity: the solution as vertex colours (smooth) or flat patches", "smooth",
+     words_rule(choice_words<kGiViewChoices>),
+     [](RenderArgs& r, const FlagValue& v) { r.gi_view_patches = chosen(kGiViewChoices, v); }},
     {"--gi-log", OptionUse::Command, "FILE",
-     "radiosity: write the unshot energy after every shot (CSV)",
-     [](RenderArgs& r, const std::string&, const std::string& v) { r.gi_log = v; }},
+     "radiosity: write the unshot energy after every shot (CSV)", nullptr, text_rule(),
+     [](RenderArgs& r, const FlagValue& v) { r.gi_log = v.text; }},
     {"--texture-cache"},
-    {"--display", OptionUse::Output, "D",
-     "OCIO display and view for PNG/TIFF/JPEG [config defaults]",
-     [](RenderArgs& r, const std::string&, const std::string& v) { r.output_options.display = v; }},
-    {"--view", OptionUse::Output, "V", nullptr,
-     [](RenderArgs& r, const std::string&, const std::string& v) { r.output_options.view = v; }},
-    {"--range", OptionUse::Output, "R",
-     "clamp (default) or normalize (divide by the image maximum)",
-     [](RenderArgs& r, const std::string& f, const std::string& v) {
-         r.output_options.range = word_choice<RangeMode>(
-             f, v, {{"clamp", RangeMode::Clamp}, {"normalize", RangeMode::Normalize}});
-     }},
-    {"--half", OptionUse::Output, nullptr, "write EXR as half float",
-     [](RenderArgs& r, const std::string&, const std::string&) {
-         r.output_options.half_float_exr = true;
-     }},
+    {"--display", OptionUse::Output, "D", "OCIO display and view for PNG/TIFF/JPEG",
+     "config defaults", text_rule(),
+     [](RenderArgs& r, const FlagValue& v) { r.output_options.display = v.text; }},
+    {"--view", OptionUse::Output, "V", nullptr, nullptr, text_rule(),
+     [](RenderArgs& r, const FlagValue& v) { r.output_options.view = v.text; }},
+    {"--range", OptionUse::Output, nullptr,
+     "display-referred values above 1: clamped, or normalize divides by the image maximum", "clamp",
+     words_rule(choice_words<kRangeChoices>),
+     [](RenderArgs& r, const FlagValue& v) { r.output_options.range = chosen(kRangeChoices, v); }},
+    {"--half", OptionUse::Output, nullptr, "write EXR as half float", nullptr, switch_rule(),
+     [](RenderArgs& r, const FlagValue&) { r.output_options.half_float_exr = true; }},
     {"--exr-compression", OptionUse::Output, "C",
-     "EXR compression: zip (default), none, rle, zips, piz (lossless); pxr24, b44, b44a, dwaa, "
-     "dwab (lossy); docs/performance.md",
-     [](RenderArgs& r, const std::string& f, const std::string& v) {
-         if (!is_exr_compression(v)) {
-             throw UsageError(f + ": expected one of " + exr_compression_names() + ", got '" + v +
-                              "'");
-         }
-         r.output_options.exr_compression = v;
-     }},
+     "EXR compression, lossless or lossy (which is which, and their costs: "
+     "docs/performance.md)",
+     "zip", words_rule(exr_compression_list),
+     [](RenderArgs& r, const FlagValue& v) { r.output_options.exr_compression = v.text; }},
     {"--stream", OptionUse::Command, nullptr,
      "write the file as tiles finish, in memory that does not grow with the image (tiled EXR; "
-     "PNG/TIFF/JPEG rows in order), or hold the whole image and write it at the end [stream "
-     "above 1024x1024; docs/high-resolution.md]",
-     [](RenderArgs& r, const std::string&, const std::string&) { r.stream = StreamMode::Always; }},
-    {"--no-stream", OptionUse::Command, nullptr, nullptr,
-     [](RenderArgs& r, const std::string&, const std::string&) { r.stream = StreamMode::Never; }},
+     "PNG/TIFF/JPEG rows in order), or hold the whole image and write it at the end",
+     "stream above 1024x1024; docs/high-resolution.md", switch_rule(),
+     [](RenderArgs& r, const FlagValue&) { r.stream = StreamMode::Always; }},
+    {"--no-stream", OptionUse::Command, nullptr, nullptr, nullptr, switch_rule(),
+     [](RenderArgs& r, const FlagValue&) { r.stream = StreamMode::Never; }},
     {"--resume", OptionUse::Command, nullptr,
      "continue the interrupted render of the same output: render only the tiles missing from "
      "OUTPUT.rayo-partial (same scene and settings; docs/high-resolution.md)",
-     [](RenderArgs& r, const std::string&, const std::string&) { r.resume = true; }},
+     nullptr, switch_rule(), [](RenderArgs& r, const FlagValue&) { r.resume = true; }},
     {"--no-journal", OptionUse::Command, nullptr,
-     "keep no OUTPUT.rayo-partial: Ctrl-C ends at once, not resumable",
-     [](RenderArgs& r, const std::string&, const std::string&) { r.journal = false; }},
+     "keep no OUTPUT.rayo-partial: Ctrl-C ends at once, not resumable", nullptr, switch_rule(),
+     [](RenderArgs& r, const FlagValue&) { r.journal = false; }},
     {"--journal-after", OptionUse::Command, "S",
      "keep tiles in OUTPUT.rayo-partial from S seconds into the render on: shorter renders write "
-     "none, an interrupt loses at most S seconds of work; 0 keeps every tile [2]",
-     [](RenderArgs& r, const std::string& f, const std::string& v) {
-         r.journal_after_s = parse_number(f, v, 0.0, 1e6);
-     }},
-    {"--quiet", OptionUse::Command, nullptr, "no progress bar and no summary line",
-     [](RenderArgs& r, const std::string&, const std::string&) { r.quiet = true; }, "-q"},
-    {"--stats", OptionUse::Command, nullptr, "print the full statistics table",
-     [](RenderArgs& r, const std::string&, const std::string&) { r.stats = true; }},
-    {"--integrator", OptionUse::Render, "NAME",
-     "the integrator, one of the list below [scene's, default whitted]",
-     [](RenderArgs& r, const std::string&, const std::string& v) {
-         integrator_flag(v);
-         r.integrator = v;
+     "none, an interrupt loses at most S seconds of work; 0 keeps every tile",
+     "2", real_rule(0.0, 1e6),
+     [](RenderArgs& r, const FlagValue& v) { r.journal_after_s = v.number; }},
+    {"--quiet", OptionUse::Command, nullptr, "no progress bar and no summary line", nullptr,
+     switch_rule(), [](RenderArgs& r, const FlagValue&) { r.quiet = true; }, "-q"},
+    {"--stats", OptionUse::Command, nullptr, "print the full statistics table", nullptr,
+     switch_rule(), [](RenderArgs& r, const FlagValue&) { r.stats = true; }},
+    {"--integrator", OptionUse::Render, "NAME", "the integrator, one of the list below",
+     "scene's, default whitted", text_rule(),
+     [](RenderArgs& r, const FlagValue& v) {
+         integrator_flag(v.text);
+         r.integrator = v.text;
      }},
 };
 
 const RenderOption* render_option(const std::string& flag) {
-    for (const RenderOption& o : kRenderOptions) {
-        if (o.apply && (flag == o.flag || (o.alias && flag == o.alias))) return &o;
-    }
-    return nullptr;
+    return find_flag(kRenderOptions, flag);
 }
 
 std::string render_help() {
@@ -473,32 +401,133 @@ std::string render_help() {
         "usage: rayo render [SCENE] [options]\n  render SCENE; the built-in scene without "
         "one\n\nrender options:\n";
     std::set<std::string> placed;
-    const size_t count = std::size(kRenderOptions);
-    for (size_t i = 0; i < count; ++i) {
-        const RenderOption& o = kRenderOptions[i];
-        if (!o.apply) {
-            out += setting_help(o.flag);
-            placed.insert(o.flag);
-            continue;
-        }
-        // The entry and those that share its line: "-o, --output FILE", "--width W, --height H".
-        auto joins = [&](size_t j) { return kRenderOptions[j].apply && !kRenderOptions[j].help; };
-        std::string spelling;
-        for (size_t j = i; j < count && (j == i || joins(j)); ++j) {
-            const RenderOption& part = kRenderOptions[j];
-            if (j > i) spelling += ", ";
-            if (part.alias) spelling += std::string(part.alias) + ", ";
-            spelling += part.flag;
-            if (part.value_name) spelling += std::string(" ") + part.value_name;
-        }
-        out += help_lines(spelling, o.help);
-        while (i + 1 < count && joins(i + 1)) ++i;
-    }
+    out += flags_help(kRenderOptions, [&](const RenderOption& o) {
+        placed.insert(o.flag);
+        return setting_help(o.flag);
+    });
     // A declared render setting the list does not place still has its line.
     for (const std::string& flag : render_setting_flags()) {
         if (!placed.count(flag)) out += setting_help(flag);
     }
     return out + "\n" + integrators_help();
+}
+
+// `rayo texture NAME [options]` (seed 003 ch. 3 maps).
+struct TextureArgs {
+    std::optional<std::string> name, output;
+    int width = 512, height = 512;
+    std::optional<float> scale;
+    uint32_t seed = 0;
+};
+
+// What --size takes: WxH, each side within the declared image bounds (as --width/--height).
+std::string texture_size_expectation() {
+    return "WxH, each " + rule_text(resolution_rule("width"), nullptr);
+}
+
+const CommandFlag<TextureArgs> kTextureFlags[] = {
+    {"--output", "-o", "FILE", "output image, as for render", "NAME.png", text_rule(),
+     [](TextureArgs& t, const FlagValue& v) { t.output = v.text; }},
+    {"--size", nullptr, "WxH", "image size in pixels (64 pixels per world unit)", "512x512",
+     custom_rule(texture_size_expectation),
+     [](TextureArgs& t, const FlagValue& v) {
+         const size_t x = v.text.find('x');
+         if (x == std::string::npos) {
+             refuse_flag(v, "expected " + texture_size_expectation() + ", got '" + v.text + "'");
+         }
+         t.width = read_flag_value(v.flag + " width", resolution_rule("width"), v.text.substr(0, x))
+                       .integer;
+         t.height =
+             read_flag_value(v.flag + " height", resolution_rule("height"), v.text.substr(x + 1))
+                 .integer;
+     }},
+    {"--scale", nullptr, "S", "world units per feature", "1: the seed's 64-pixel cells",
+     real_rule(1e-6, 1e6), [](TextureArgs& t, const FlagValue& v) { t.scale = v.number; }},
+    {"--seed", nullptr, "N", "the seed of the noise textures' hash", "0",
+     integer_rule(0, std::numeric_limits<int32_t>::max()),
+     [](TextureArgs& t, const FlagValue& v) { t.seed = static_cast<uint32_t>(v.integer); }},
+};
+
+std::string texture_help() {
+    return "usage: rayo texture NAME [options]\n"
+           "  write a procedural texture flat (the plane z = 0)\n\n"
+           "texture NAME is one of (docs/textures.md):\n  " +
+           texture_kind_list() + "\ntexture options:\n" + flags_help(kTextureFlags) + "\n";
+}
+
+// `rayo bench accuracy`: the sphere- and shape-method studies, or one of them.
+enum class Study { Both, Spheres, Shapes };
+const std::initializer_list<Choice<Study>> kStudyChoices = {{"spheres", Study::Spheres},
+                                                            {"shapes", Study::Shapes}};
+
+struct AccuracyArgs {
+    std::optional<std::string> dir;
+    int size = kAccuracyImageSize;
+    Study only = Study::Both;
+};
+
+const CommandFlag<AccuracyArgs> kAccuracyFlags[] = {
+    {"--output", "-o", "DIR", "write the CSV files and charts (gnuplot) there (required)", nullptr,
+     text_rule(), [](AccuracyArgs& a, const FlagValue& v) { a.dir = v.text; }},
+    {"--size", nullptr, "N", "scenes of N×N pixels", "384",
+     integer_rule(kAccuracySizeRange.min, kAccuracySizeRange.max),
+     [](AccuracyArgs& a, const FlagValue& v) { a.size = v.integer; }},
+    {"--only", nullptr, nullptr, "only the sphere-method or the shape-method study", nullptr,
+     words_rule(choice_words<kStudyChoices>),
+     [](AccuracyArgs& a, const FlagValue& v) { a.only = chosen(kStudyChoices, v); }},
+};
+
+// `rayo bench suite`: the SPD scenes as a benchmark (bench/lab/spd_suite.h).
+struct SuiteArgs {
+    SuiteOptions options;
+    bool write_nff = false;
+};
+
+// What --scenes takes: names of the suite's scenes (bench/lab/spd_scenes.h), comma-separated.
+std::string suite_scenes_expectation() {
+    std::string names;
+    for (const std::string& n : spd_scene_names()) names += (names.empty() ? "" : ",") + n;
+    return "a comma-separated list of " + names;
+}
+
+const CommandFlag<SuiteArgs> kSuiteFlags[] = {
+    {"--output", "-o", "DIR", "write the files there (and --povray's scenes and logs)", nullptr,
+     text_rule(), [](SuiteArgs& s, const FlagValue& v) { s.options.dir = v.text; }},
+    {"--size", nullptr, "N", "SPD size of every scene", "3",
+     integer_rule(kSuiteSizeRange.min, kSuiteSizeRange.max),
+     [](SuiteArgs& s, const FlagValue& v) { s.options.size = v.integer; }},
+    {"--width", nullptr, "W", "images of W×W pixels", "512",
+     integer_rule(kSuiteWidthRange.min, kSuiteWidthRange.max),
+     [](SuiteArgs& s, const FlagValue& v) { s.options.width = v.integer; }},
+    {"--threads", nullptr, "N", "worker threads", "all cores",
+     integer_rule(kSuiteThreadsRange.min, kSuiteThreadsRange.max),
+     [](SuiteArgs& s, const FlagValue& v) { s.options.threads = v.integer; }},
+    {"--scenes", nullptr, "A,B", "only these scenes", nullptr,
+     custom_rule(suite_scenes_expectation),
+     [](SuiteArgs& s, const FlagValue& v) {
+         const std::vector<std::string>& known = spd_scene_names();
+         std::istringstream list(v.text);
+         for (std::string name; std::getline(list, name, ',');) {
+             if (std::find(known.begin(), known.end(), name) == known.end()) {
+                 refuse_flag(v, "expected " + suite_scenes_expectation() + ", got '" + v.text +
+                                    "' ('" + name + "')");
+             }
+             s.options.only.push_back(name);
+         }
+     }},
+    {"--povray", nullptr, nullptr,
+     "also time POV-Ray 3.7 on the same scenes (its files in DIR, or in a temporary folder "
+     "without -o)",
+     nullptr, switch_rule(), [](SuiteArgs& s, const FlagValue&) { s.options.povray = true; }},
+    {"--write-nff", nullptr, nullptr, "write DIR/NAME_SIZE.nff for each scene instead of rendering",
+     nullptr, switch_rule(), [](SuiteArgs& s, const FlagValue&) { s.write_nff = true; }},
+};
+
+std::string bench_help() {
+    return "usage: rayo bench accuracy -o DIR [options]\n"
+           "       rayo bench suite [options]\n\n"
+           "bench accuracy options (docs/stability.md, docs/shape-methods.md):\n" +
+           flags_help(kAccuracyFlags) + "\nbench suite options:\n" + flags_help(kSuiteFlags) + "\n";
 }
 
 const char* option_use_text(OptionUse use) {
@@ -536,7 +565,9 @@ RenderArgs parse_render_args(const std::vector<std::string>& args,
             r.settings.push_back(std::move(flag));
         } else if (const RenderOption* option = render_option(a)) {
             check_use(a, option->use);
-            option->apply(r, a, option->value_name ? cursor.value() : std::string());
+            const bool takes_value = option->rule.kind != FlagRule::Kind::Switch;
+            option->apply(
+                r, read_flag_value(a, option->rule, takes_value ? cursor.value() : std::string()));
         } else if (!a.empty() && a[0] == '-') {
             throw UsageError("unknown option '" + a + "' (see rayo render --help)");
         } else if (!r.scene_path) {
@@ -1131,37 +1162,16 @@ int run_render(const std::vector<std::string>& arg_list, std::ostream& out, std:
     }
 }
 
-// `rayo texture NAME [-o OUT] [--size WxH] [--scale S] [--seed N]` (seed 003 ch. 3 maps).
+// `rayo texture NAME [options]`: the flags by kTextureFlags.
 int run_texture(const std::vector<std::string>& args, std::ostream& out) {
-    std::optional<std::string> name, output;
-    int width = 512, height = 512;
-    std::optional<float> scale;
-    uint32_t seed = 0;
-    ArgCursor cursor(args);
-    while (cursor.next()) {
-        const std::string& a = cursor.current();
-        if (a == "-o" || a == "--output") {
-            output = cursor.value();
-        } else if (a == "--size") {
-            const std::string& v = cursor.value();
-            const size_t x = v.find('x');
-            if (x == std::string::npos) {
-                throw UsageError(a + ": expected WxH (e.g. 512x512), got '" + v + "'");
-            }
-            width = parse_int(a + " width", v.substr(0, x), 1, kMaxImageSide);
-            height = parse_int(a + " height", v.substr(x + 1), 1, kMaxImageSide);
-        } else if (a == "--scale") {
-            scale = static_cast<float>(parse_number(a, cursor.value(), 1e-6, 1e6));
-        } else if (a == "--seed") {
-            seed = static_cast<uint32_t>(parse_int(a, cursor.value(), 0, 2147483647));
-        } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option '" + a + "' (see rayo texture --help)");
-        } else if (!name) {
-            name = a;
-        } else {
-            throw UsageError("unexpected argument '" + a + "': one texture per command");
-        }
-    }
+    TextureArgs t;
+    parse_flags(kTextureFlags, args, 0, "texture", t, [&](const std::string& word) {
+        if (t.name) throw UsageError("unexpected argument '" + word + "': one texture per command");
+        t.name = word;
+    });
+    const std::optional<std::string>& name = t.name;
+    const int width = t.width, height = t.height;
+    const uint32_t seed = t.seed;
     const std::vector<std::string>& names = texture_kind_names();
     const std::string known = texture_kind_list();
     if (!name) throw UsageError("texture: expected a texture name (" + known + ")");
@@ -1172,10 +1182,10 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
     check_film_size(width, height, "--size");
     start_threads_then_image_module(0);
     Texture texture = make_texture(*name);
-    if (scale) texture.scale = *scale;
+    if (t.scale) texture.scale = *t.scale;
     texture.seed = seed;
     const Film film = texture_image(texture, width, height);
-    const std::string path = output ? *output : *name + ".png";
+    const std::string path = t.output ? *t.output : *name + ".png";
     OutputOptions options;
     options.metadata["rayo:texture"] = *name;
     options.metadata["rayo:texture_scale"] = std::to_string(texture.scale);
@@ -1194,12 +1204,12 @@ struct PreviewArgs {
 };
 
 // Preview takes --over-render and, with render's meaning and parsing, the render flags below;
-// it refuses the other render flags (samples, sphere methods, ...) as unknown.
+// it refuses the other render flags (samples, sphere methods, ...) as unknown. Whether a shared
+// flag takes a value is its render entry's (kRenderOptions).
 PreviewArgs parse_preview_args(const std::vector<std::string>& args) {
-    static const std::set<std::string> kWithValue = {
-        "-o",        "--output", "--width", "--height", "--threads", "--nff-light-intensity",
-        "--display", "--view"};
-    static const std::set<std::string> kWithoutValue = {"--quiet", "-q"};
+    static const std::set<std::string> kShared = {
+        "--output",  "--width", "--height", "--threads", "--nff-light-intensity",
+        "--display", "--view",  "--quiet"};
     PreviewArgs p;
     std::vector<std::string> render_args;
     bool scene_seen = false;
@@ -1207,11 +1217,10 @@ PreviewArgs parse_preview_args(const std::vector<std::string>& args) {
         const std::string& a = args[i];
         if (a == "--over-render") {
             p.over_render = true;
-        } else if (kWithValue.count(a)) {
+        } else if (const RenderOption* o = render_option(a); o && kShared.count(o->flag)) {
             render_args.push_back(a);
-            if (i + 1 < args.size()) render_args.push_back(args[++i]);
-        } else if (kWithoutValue.count(a)) {
-            render_args.push_back(a);
+            const bool takes_value = o->rule.kind != FlagRule::Kind::Switch;
+            if (takes_value && i + 1 < args.size()) render_args.push_back(args[++i]);
         } else if (!a.empty() && a[0] == '-') {
             throw UsageError("unknown option '" + a + "' (see rayo preview --help)");
         } else if (!scene_seen) {
@@ -1341,31 +1350,12 @@ int run_info(const std::vector<std::string>& args, std::ostream& out) {
 }
 
 int run_bench_suite(const std::vector<std::string>& args, std::ostream& out) {
-    SuiteOptions options;
-    bool write_nff = false;
-    ArgCursor cursor(args);
-    cursor.next();  // "suite"
-    while (cursor.next()) {
-        const std::string& a = cursor.current();
-        if (a == "-o" || a == "--output") {
-            options.dir = cursor.value();
-        } else if (a == "--size") {
-            options.size = parse_int(a, cursor.value(), 1, 64);
-        } else if (a == "--width") {
-            options.width = parse_int(a, cursor.value(), 2, 16384);
-        } else if (a == "--threads") {
-            options.threads = parse_int(a, cursor.value(), 1, 4096);
-        } else if (a == "--scenes") {
-            std::istringstream list(cursor.value());
-            for (std::string name; std::getline(list, name, ',');) options.only.push_back(name);
-        } else if (a == "--povray") {
-            options.povray = true;
-        } else if (a == "--write-nff") {
-            write_nff = true;
-        } else {
-            throw UsageError("bench suite: unknown option '" + a + "'");
-        }
-    }
+    SuiteArgs parsed;
+    parse_flags(kSuiteFlags, args, 1, "bench", parsed, [](const std::string& word) {
+        throw UsageError("bench suite: unexpected argument '" + word + "'");
+    });
+    const SuiteOptions& options = parsed.options;
+    const bool write_nff = parsed.write_nff;
     if (write_nff && options.dir.empty()) throw UsageError("bench suite: --write-nff needs -o DIR");
     if (write_nff) {
         write_spd_nff_files(options, out);
@@ -1386,32 +1376,18 @@ int run_bench(const std::vector<std::string>& args, std::ostream& out) {
     if (!args.empty() && args[0] == "suite") return run_bench_suite(args, out);
     if (args.empty() || args[0] != "accuracy") {
         throw UsageError(
-            "bench: expected 'rayo bench accuracy -o DIR [--size N]' or 'rayo bench suite'");
+            "bench: expected 'rayo bench accuracy -o DIR [options]' or 'rayo bench suite "
+            "[options]' (see rayo bench --help)");
     }
-    std::optional<std::string> dir;
-    int size = kAccuracyImageSize;
-    std::string only;  // "spheres", "shapes" or both
-    ArgCursor cursor(args);
-    cursor.next();  // "accuracy"
-    while (cursor.next()) {
-        const std::string& a = cursor.current();
-        if (a == "-o" || a == "--output") {
-            dir = cursor.value();
-        } else if (a == "--size") {
-            size = parse_int(a, cursor.value(), 16, 4096);
-        } else if (a == "--only") {
-            const std::string& m = cursor.value();
-            if (m != "spheres" && m != "shapes") {
-                throw UsageError(a + ": expected 'spheres' or 'shapes', got '" + m + "'");
-            }
-            only = m;
-        } else {
-            throw UsageError("bench accuracy: unknown option '" + a + "'");
-        }
-    }
+    AccuracyArgs parsed;
+    parse_flags(kAccuracyFlags, args, 1, "bench", parsed, [](const std::string& word) {
+        throw UsageError("bench accuracy: unexpected argument '" + word + "'");
+    });
+    const std::optional<std::string>& dir = parsed.dir;
+    const int size = parsed.size;
     if (!dir) throw UsageError("bench accuracy: -o DIR is required");
-    if (only != "shapes") run_accuracy_bench(*dir, out, size);
-    if (only != "spheres") run_shape_method_bench(*dir, out, size);
+    if (parsed.only != Study::Shapes) run_accuracy_bench(*dir, out, size);
+    if (parsed.only != Study::Spheres) run_shape_method_bench(*dir, out, size);
     return 0;
 }
 
@@ -1458,8 +1434,8 @@ std::vector<RenderOptionInfo> render_option_list() {
     std::vector<RenderOptionInfo> list;
     for (const RenderOption& o : kRenderOptions) {
         if (!o.apply) continue;  // the declared settings follow
-        list.push_back(
-            {o.flag, o.use, o.value_name != nullptr, help_lines(o.flag, o.help ? o.help : "")});
+        list.push_back({o.flag, o.use, o.rule.kind != FlagRule::Kind::Switch,
+                        help_lines(flag_spelling(o), flag_help_text(o))});
     }
     std::vector<std::string> declared = render_setting_flags();
     for (const std::string& flag : integrator_setting_flags()) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "apps/cli/flag_table.h"
 #include "apps/cli/usage_error.h"
 
 namespace rayo {
@@ -70,15 +71,12 @@ struct HelpEntry {
 struct HelpCollector {
     std::vector<HelpEntry> entries;
     void integer(const SettingInfo& info, const int& member, long long min, long long max) {
-        entries.push_back({setting_flag(info), "N", info.help,
-                           std::to_string(min) + ".." + std::to_string(max),
+        entries.push_back({setting_flag(info), "N", info.help, integer_range_text(min, max),
                            std::to_string(member)});
     }
     void real(const SettingInfo& info, const float& member, double min, double max) {
-        const std::string range =
-            max >= 1e29 ? "a number >= " + number_text(min)
-                        : "a number in [" + number_text(min) + ", " + number_text(max) + "]";
-        entries.push_back({setting_flag(info), "X", info.help, range, number_text(member)});
+        entries.push_back(
+            {setting_flag(info), "X", info.help, real_range_text(min, max), number_text(member)});
     }
     void toggle(const SettingInfo& info, const bool& member) {
         entries.push_back({setting_flag(info), "", info.help, "", member ? "on" : "off"});

@@ -642,7 +642,12 @@ class SceneParser {
         const Json* v = find(value, "method");
         if (!v) return;
         const std::string where = child(pointer, "method");
-        const std::string method = choice(*v, where, {"analytic", "mesh", "auto"});
+        // The names --shape-method reads, by the same check.
+        ShapeMethod method = ShapeMethod::Analytic;
+        if (const std::optional<std::string> problem =
+                read_choice(setting_value(*v), kShapeMethodChoices, method)) {
+            fail(where, *problem);
+        }
         if constexpr (std::is_same_v<S, Sphere>) {
             fail(where,
                  "a sphere's method is the render's: \"render\": {\"sphere_method\": ...} "
@@ -657,9 +662,8 @@ class SceneParser {
                  "objects in groups are traced analytically: their size in pixels "
                  "depends on every instance (give \"method\" to top-level objects)");
         }
-        out.shape_methods.push_back({Shapes::index_of<S>(),
-                                     static_cast<uint32_t>(shapes.size() - 1),
-                                     *parse_shape_method(method)});
+        out.shape_methods.push_back(
+            {Shapes::index_of<S>(), static_cast<uint32_t>(shapes.size() - 1), method});
     }
 
     // A CSG object (core/shapes/csg.h): its tree, read into one Csg.
@@ -929,12 +933,9 @@ void SceneParser::parse_camera(const Json& value, const std::string& pointer,
     if (const Json* v = find(value, "focus_distance")) {
         camera.focus_distance = real(*v, child(pointer, "focus_distance"), Bound::Positive);
     }
-    if (const Json* v = find(value, "width")) {
-        camera.width = integer(*v, child(pointer, "width"), 1, kMaxImageSide);
-    }
-    if (const Json* v = find(value, "height")) {
-        camera.height = integer(*v, child(pointer, "height"), 1, kMaxImageSide);
-    }
+    // "width" and "height" by their declaration, the one --width and --height are checked by.
+    FieldReader size_reader{*this, value, pointer};
+    camera.resolution_fields(size_reader);
     if (glm::length(camera.look_at - camera.eye) == 0.0f) {
         fail(child(pointer, "look_at"), "expected look_at to differ from eye");
     }
@@ -981,17 +982,11 @@ void SceneParser::parse_render(const Json& value, const std::string& pointer,
         }
     }
     if (const Json* v = find(value, "sphere_method")) {
-        const std::string where = child(pointer, "sphere_method");
-        if (!v->is_string()) fail(where, "expected a sphere method name, got " + describe(*v));
-        const std::optional<SphereRepresentation> method =
-            parse_sphere_method(v->get<std::string>());
-        if (!method) {
-            fail(where,
-                 "expected one of \"auto\", \"user\", \"bruteforce\", \"embree-point\", "
-                 "\"mesh:N\" (N in 0.." +
-                     std::to_string(kMaxMeshLevel) + "), got " + describe(*v));
+        // The reader --sphere-method uses (core/sphere_method.h).
+        if (const std::optional<std::string> problem =
+                read_sphere_method(setting_value(*v), s.spheres)) {
+            fail(child(pointer, "sphere_method"), *problem);
         }
-        s.spheres = *method;
     }
 }
 

@@ -86,6 +86,10 @@ std::string exr_compression_names() {
     return names;
 }
 
+std::vector<std::string> exr_compression_list() {
+    return {std::begin(kExrCompressions), std::end(kExrCompressions)};
+}
+
 bool is_exr_compression(const std::string& name) {
     return std::find(std::begin(kExrCompressions), std::end(kExrCompressions), name) !=
            std::end(kExrCompressions);

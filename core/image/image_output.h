@@ -4,6 +4,7 @@
 // target directory and renamed, so a failure never leaves a partial file under the final name.
 #include <map>
 #include <string>
+#include <vector>
 
 #include "core/film.h"
 
@@ -30,6 +31,8 @@ struct OutputOptions {
 // none, rle, zips, zip, piz; lossy pxr24 (floats kept to 24 bits), b44 and b44a (half channels
 // only: float channels are stored uncompressed), dwaa and dwab (DCT, lossy colour).
 std::string exr_compression_names();
+// The same names as a list (--exr-compression's choices and --help).
+std::vector<std::string> exr_compression_list();
 bool is_exr_compression(const std::string& name);
 
 // The OCIO config rayo uses: $OCIO when set, else the shipped config (installed or source tree).

@@ -581,8 +581,8 @@ TEST_F(BadInputCli, FlagValuesCliTestDoesNotCover) {
         {"--view", "--view: missing value"},
         {"--exr-compression", "--exr-compression: missing value"},
         {"--exr-compression zstd",
-         "--exr-compression: expected one of none, rle, zips, zip, piz, pxr24, b44, b44a, dwaa, "
-         "dwab, got 'zstd'"},
+         "--exr-compression: expected one of \"none\", \"rle\", \"zips\", \"zip\", \"piz\", "
+         "\"pxr24\", \"b44\", \"b44a\", \"dwaa\", \"dwab\", got 'zstd'"},
         {"--exr-compression ZIP", "--exr-compression: expected one of"},
     };
     for (const Flag& f : flags) {

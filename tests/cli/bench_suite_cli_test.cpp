@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "apps/cli/int_flag.h"
 #include "tests/cli/cli_fixture.h"
 
 namespace {
@@ -67,9 +68,14 @@ TEST_F(BenchSuiteTest, WritesTheGeneratedNffFiles) {
 }
 
 TEST_F(BenchSuiteTest, BadOptionsAreClearErrors) {
-    CommandResult r = run("bench suite --scenes bunny --size 1 --width 8");
-    EXPECT_EQ(r.exit_code, 1) << r.output;
-    EXPECT_NE(r.output.find("spd:bunny"), std::string::npos) << r.output;
+    // --scenes is checked against the suite's scene list (the one its help names) before any
+    // work: a usage error.
+    CommandResult r = run("bench suite --scenes balls,bunny --size 1 --width 8");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("--scenes: expected a comma-separated list of balls,gears,"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("got 'balls,bunny' ('bunny')"), std::string::npos) << r.output;
     r = run("bench suite --size 7 --scenes balls --width 8");
     EXPECT_EQ(r.exit_code, 1) << r.output;
     EXPECT_NE(r.output.find("up to size 6"), std::string::npos) << r.output;
@@ -77,6 +83,53 @@ TEST_F(BenchSuiteTest, BadOptionsAreClearErrors) {
     EXPECT_EQ(r.exit_code, 2) << r.output;
     r = run("bench suite --frobnicate");
     EXPECT_EQ(r.exit_code, 2) << r.output;
+}
+
+// The bench commands' flags are declared once (kAccuracyFlags, kSuiteFlags in apps/cli/cli.cpp,
+// their bounds in apps/cli/int_flag.h, which the Python module shares): --help states each bound
+// and choice, and the parser refuses a value beyond it with the same numbers.
+TEST_F(BenchSuiteTest, HelpStatesTheBoundsTheParserEnforces) {
+    const auto range = [](rayo::IntRange r) {
+        return std::to_string(r.min) + ".." + std::to_string(r.max);
+    };
+    const auto expected = [](rayo::IntRange r, int got) {
+        return "expected an integer in [" + std::to_string(r.min) + ", " + std::to_string(r.max) +
+               "], got '" + std::to_string(got) + "'";
+    };
+    const CommandResult help = run("bench --help");
+    ASSERT_EQ(help.exit_code, 0);
+    for (const std::string& text :
+         {"scenes of N×N pixels, " + range(rayo::kAccuracySizeRange),
+          std::string("--only spheres|shapes"),
+          "SPD size of every scene, " + range(rayo::kSuiteSizeRange),
+          "images of W×W pixels, " + range(rayo::kSuiteWidthRange),
+          "worker threads, " + range(rayo::kSuiteThreadsRange), std::string("--scenes A,B"),
+          std::string("a comma-separated list of"),
+          std::string("balls,gears,mount,rings,teapot,tetra,tree")}) {
+        EXPECT_NE(help.output.find(text), std::string::npos) << text << "\n" << help.output;
+    }
+    const struct {
+        std::string args, message;
+    } refused[] = {
+        {"bench accuracy -o out --size " + std::to_string(rayo::kAccuracySizeRange.min - 1),
+         "--size: " + expected(rayo::kAccuracySizeRange, rayo::kAccuracySizeRange.min - 1)},
+        {"bench accuracy -o out --only cones",
+         "--only: expected one of \"spheres\", \"shapes\", got 'cones'"},
+        {"bench suite --size " + std::to_string(rayo::kSuiteSizeRange.max + 1),
+         "--size: " + expected(rayo::kSuiteSizeRange, rayo::kSuiteSizeRange.max + 1)},
+        {"bench suite --width " + std::to_string(rayo::kSuiteWidthRange.min - 1),
+         "--width: " + expected(rayo::kSuiteWidthRange, rayo::kSuiteWidthRange.min - 1)},
+        {"bench suite --threads " + std::to_string(rayo::kSuiteThreadsRange.max + 1),
+         "--threads: " + expected(rayo::kSuiteThreadsRange, rayo::kSuiteThreadsRange.max + 1)},
+        {"bench accuracy -o out stray", "bench accuracy: unexpected argument 'stray'"},
+    };
+    for (const auto& r : refused) {
+        const CommandResult c = run(r.args);
+        EXPECT_EQ(c.exit_code, 2) << r.args << ": " << c.output;
+        EXPECT_NE(c.output.find("rayo: error: " + r.message), std::string::npos)
+            << r.args << ": " << c.output;
+    }
+    EXPECT_FALSE(fs::exists(m_dir / "out"));
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/cli/flag_table.h"
 #include "apps/scene/scene_description.h"
 #include "tests/cli/cli_fixture.h"
 
@@ -160,6 +161,66 @@ TEST_F(IntegratorCli, AFlagAndItsJsonFieldShareOneBound) {
               limit + "}}");
     EXPECT_EQ(run("render limit.json -o a.exr --quiet").exit_code, 0);
     EXPECT_EQ(run("render limit.json --spp " + limit + " -o b.exr --quiet").exit_code, 0);
+    EXPECT_EQ(listing().count("out.png"), 0u);
+
+    // An integrator's flag and its field: --max-depth and "max_depth" of the "whitted"
+    // integrator, the bound read from WhittedSettings::fields.
+    rayo::RuleFinder depth{"max_depth"};
+    rayo::WhittedSettings whitted;
+    whitted.fields(depth);
+    ASSERT_TRUE(depth.rule);
+    const long long max_depth = static_cast<long long>(depth.rule->max);
+    const std::string depth_expected = "expected an integer in [" +
+                                       std::to_string(static_cast<long long>(depth.rule->min)) +
+                                       ", " + std::to_string(max_depth) + "], got ";
+    const std::string deep = std::to_string(max_depth + 1);
+    const CommandResult depth_flag = run("render --max-depth " + deep + " -o out.png");
+    EXPECT_EQ(depth_flag.exit_code, 2);
+    EXPECT_NE(depth_flag.output.find("--max-depth: " + depth_expected + "'" + deep + "'"),
+              std::string::npos)
+        << depth_flag.output;
+    write("deep.json",
+          "{\"rayo\": 1, \"render\": {\"integrator\": {\"type\": \"whitted\", "
+          "\"max_depth\": " +
+              deep + "}}}");
+    const CommandResult depth_json = run("render deep.json -o out.png");
+    EXPECT_EQ(depth_json.exit_code, 1);
+    EXPECT_NE(
+        depth_json.output.find("deep.json#/render/integrator/max_depth: " + depth_expected + deep),
+        std::string::npos)
+        << depth_json.output;
+
+    // The image size: --width and "camera": {"width"}, the bound read from
+    // CameraDesc::resolution_fields (kMaxImageSide).
+    rayo::RuleFinder width{"width"};
+    rayo::CameraDesc camera;
+    camera.resolution_fields(width);
+    ASSERT_TRUE(width.rule);
+    const long long max_width = static_cast<long long>(width.rule->max);
+    EXPECT_EQ(max_width, rayo::kMaxImageSide);
+    const std::string width_expected =
+        "expected an integer in [1, " + std::to_string(max_width) + "], got ";
+    const std::string wide = std::to_string(max_width + 1);
+    const CommandResult width_flag = run("render --width " + wide + " -o out.png");
+    EXPECT_EQ(width_flag.exit_code, 2);
+    EXPECT_NE(width_flag.output.find("--width: " + width_expected + "'" + wide + "'"),
+              std::string::npos)
+        << width_flag.output;
+    write("wide.json", "{\"rayo\": 1, \"camera\": {\"width\": " + wide + "}}");
+    const CommandResult width_json = run("render wide.json -o out.png");
+    EXPECT_EQ(width_json.exit_code, 1);
+    EXPECT_NE(width_json.output.find("wide.json#/camera/width: " + width_expected + wide),
+              std::string::npos)
+        << width_json.output;
+    // Both limits are accepted by flag and field (one row of pixels keeps it quick).
+    write("edge.json",
+          "{\"rayo\": 1, \"camera\": {\"width\": " + std::to_string(max_width) +
+              ", \"height\": 1}, \"render\": {\"max_depth\": " + std::to_string(max_depth) + "}}");
+    EXPECT_EQ(run("render edge.json -o c.exr --quiet").exit_code, 0);
+    EXPECT_EQ(run("render edge.json --width " + std::to_string(max_width) + " --max-depth " +
+                  std::to_string(max_depth) + " -o d.exr --quiet")
+                  .exit_code,
+              0);
     EXPECT_EQ(listing().count("out.png"), 0u);
 }
 

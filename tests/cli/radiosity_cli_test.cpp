@@ -108,7 +108,8 @@ TEST_F(RadiosityCli, BadFlagsAreRefused) {
         const char* message;
     } cases[] = {
         {"render --gi path -o x.png", "--gi: expected one of \"none\", \"radiosity\", got 'path'"},
-        {"render --gi-view flat -o x.png", "--gi-view: expected 'smooth' or 'patches'"},
+        {"render --gi-view flat -o x.png",
+         "--gi-view: expected one of \"smooth\", \"patches\", got 'flat'"},
         {"render --gi -o x.png", "got '-o'"},
     };
     for (const auto& c : cases) {

@@ -76,7 +76,7 @@ TEST(RenderOptions, ALibraryCallerGetsTheCommandLinesParserAndBounds) {
               "--spp: expected an integer in [1, 65536], got '0'");
     EXPECT_NE(usage_error([&] {
                   rayo::apply_render_options({"--sphere-method", "x"}, d);
-              }).find("--sphere-method: expected auto, user"),
+              }).find("--sphere-method: expected one of \"auto\", \"user\""),
               std::string::npos);
     EXPECT_EQ(usage_error([&] {
                   rayo::apply_render_options({"--ao-samples", "8"}, d);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "apps/cli/cli.h"
+#include "core/camera.h"
 #include "shading/texture.h"
 
 namespace rayo {
@@ -83,6 +84,46 @@ TEST(TextureCli, WritesTheTextureFlatAndRefusesBadFlags) {
     EXPECT_EQ(cli({"texture", "perlin", "--bogus"}), 2);
     EXPECT_EQ(cli({"texture", "perlin", "-o", (dir / "x.unknown").string()}), 1);
     std::filesystem::remove_all(dir);
+}
+
+// Each flag's bound is declared once (kTextureFlags): --help states it and the parser refuses a
+// value beyond it with the same numbers, naming the flag; the size's bound is the image's
+// (kMaxImageSide, as --width and "camera": {"width"}).
+TEST(TextureCli, HelpStatesTheBoundsTheParserEnforces) {
+    const char* argv[] = {"rayo", "texture", "--help"};
+    std::ostringstream out, err;
+    ASSERT_EQ(run_cli(3, argv, out, err), 0);
+    const std::string help = out.str();
+    const std::string side = std::to_string(kMaxImageSide);
+    for (const std::string& text : std::vector<std::string>{
+             "--scale S", "a number in [1e-06, 1e+06]", "--seed N", "0..2147483647", "--size WxH",
+             std::string("WxH, each 1..") + side, "-o, --output FILE"}) {
+        EXPECT_NE(help.find(text), std::string::npos) << text << "\n" << help;
+    }
+    const struct {
+        std::vector<std::string> args;
+        std::string message;
+    } refused[] = {
+        {{"--scale", "2e6"}, "--scale: expected a number in [1e-06, 1e+06], got '2e6'"},
+        {{"--scale", "0"}, "--scale: expected a number in [1e-06, 1e+06], got '0'"},
+        {{"--seed", "2147483648"},
+         "--seed: expected an integer in [0, 2147483647], got '2147483648'"},
+        {{"--seed", "-1"}, "--seed: expected an integer in [0, 2147483647], got '-1'"},
+        {{"--size", "16"}, "--size: expected WxH, each 1.." + side + ", got '16'"},
+        {{"--size", "0x16"}, "--size width: expected an integer in [1, " + side + "], got '0'"},
+        {{"--size", "16x" + std::to_string(kMaxImageSide + 1)},
+         "--size height: expected an integer in [1, " + side + "], got '" +
+             std::to_string(kMaxImageSide + 1) + "'"},
+        {{"--seed"}, "--seed: missing value"},
+        {{"--bogus"}, "unknown option '--bogus' (see rayo texture --help)"},
+    };
+    for (const auto& r : refused) {
+        std::vector<std::string> args = {"texture", "perlin"};
+        args.insert(args.end(), r.args.begin(), r.args.end());
+        std::string message;
+        EXPECT_EQ(cli(args, &message), 2) << r.message;
+        EXPECT_EQ(message, "rayo: error: " + r.message + "\n");
+    }
 }
 }  // namespace
 }  // namespace rayo
