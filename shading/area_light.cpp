@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "core/luminance.h"
 #include "core/sampling.h"
@@ -94,6 +95,33 @@ void AreaLight::describe(std::ostream& out) const {
         write_color_and_intensity(out, color, intensity);
     }
     out << " area " << area() << " samples " << samples;
+}
+
+std::optional<FieldProblem> AreaLight::problem() const {
+    if (samples < 1 || samples > kMaxAreaLightSamples) {
+        return FieldProblem{"samples", "expected an integer in [1, " +
+                                           std::to_string(kMaxAreaLightSamples) + "], got " +
+                                           std::to_string(samples)};
+    }
+    const float a = area();
+    if (!(a > 0.0f) || !std::isfinite(a)) {
+        switch (shape) {
+            case Shape::Rectangle:
+                return FieldProblem{"edge2",
+                                    "expected edge1 and edge2 to span a rectangle of non-zero "
+                                    "area (not parallel, neither zero)"};
+            case Shape::Disk:
+            case Shape::Sphere:
+                return FieldProblem{"radius", "expected a radius whose area is a positive float"};
+            case Shape::Mesh:
+                return FieldProblem{"shape", "expected emitting triangles of non-zero area"};
+        }
+    }
+    const Vec3 l = radiance();
+    if (!std::isfinite(l.x) || !std::isfinite(l.y) || !std::isfinite(l.z)) {
+        return FieldProblem{"intensity", "expected color × intensity to be finite"};
+    }
+    return std::nullopt;
 }
 
 float AreaLight::area() const {

@@ -4,12 +4,19 @@
 // points per shading point. The scene loader also puts the surface in the scene as an emissive
 // object (apps/scene/area_light_emitters.h) so that camera and reflection rays see it.
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "core/setting.h"
+#include "core/shapes/shape_fields.h"
 #include "shading/light_sample.h"
 #include "shading/light_text.h"
 
 namespace rayo {
+
+// Most points an area light may be sampled at per shading point (each is a shadow ray): the
+// bound of its "samples" field (AreaLight::problem), which the fuzz oracle checks through it.
+constexpr int kMaxAreaLightSamples = 4096;
 
 // The emissive triangles of a model (apps/scene/area_light_emitters.h): one light however many
 // triangles emit. A sample picks a triangle with probability proportional to its power
@@ -73,6 +80,45 @@ struct AreaLight {
     // intensity unused).
     std::shared_ptr<const MeshEmitter> mesh;
 
+    // The scene file's form (docs/scene-format.md, "lights"): the required "shape" decides which
+    // fields() follow, so the scene reader reads form() first (core/shapes/shape_fields.h). A
+    // mesh is no form of the file: its triangles come from models' emissive materials.
+    template <typename F>
+    void form(F& f) {
+        f.choice(
+            {"shape", "the emitting surface: rectangle, disk or sphere"}, shape,
+            {{"rectangle", Shape::Rectangle}, {"disk", Shape::Disk}, {"sphere", Shape::Sphere}});
+    }
+    // The fields of the form `shape` (a mesh has none of its own), then the common ones.
+    template <typename F>
+    void fields(F& f) {
+        switch (shape) {
+            case Shape::Rectangle:
+                f("corner", corner, FieldKind::Point);
+                f("edge1", edge1, FieldKind::Point);
+                f("edge2", edge2, FieldKind::Point);
+                break;
+            case Shape::Disk:
+                f("center", center, FieldKind::Point);
+                f("normal", normal, FieldKind::Direction);
+                f("radius", radius, FieldKind::Positive);
+                break;
+            case Shape::Sphere:
+                f("center", center, FieldKind::Point);
+                f("radius", radius, FieldKind::Positive);
+                break;
+            case Shape::Mesh:
+                break;
+        }
+        f.optional("samples", samples, FieldKind::Integer);
+        f.optional("color", color, FieldKind::Colour);
+        f.optional("intensity", intensity, FieldKind::NonNegative);
+    }
+    // What the fields cannot say alone: samples within [1, kMaxAreaLightSamples], an area that is
+    // a positive finite float (parallel edges, a radius whose square underflows), a finite
+    // radiance.
+    std::optional<FieldProblem> problem() const;
+
     Vec3 radiance() const { return color * intensity; }  // not for meshes: per triangle
     float area() const;
     // " rectangle|disk|sphere color ... intensity ... area A samples S", a mesh's " mesh
@@ -94,6 +140,14 @@ struct AreaLight {
     // light's surface (a sampling integrator's BSDF ray that found the emitter: its multiple
     // importance weight). Meshes: MeshEmitter::pdf_at; the other shapes: pdf.
     float pdf_at(const Vec3& point, const Vec3& direction, const EmitterPoint& at) const;
+    // The radiance a ray along `direction` (unit) carries back from the point `at` of this
+    // light's surface where it arrives: L on the emitting side (a mesh: the triangle's own,
+    // at.radiance, before any emission image), none from behind (multiple importance sampling
+    // weighs it with pdf_at).
+    Vec3 emitted(const Vec3& direction, const EmitterPoint& at) const {
+        if (!(glm::dot(direction, at.normal) < 0.0f)) return Vec3(0.0f);
+        return shape == Shape::Mesh ? at.radiance : radiance();
+    }
 };
 
 }  // namespace rayo

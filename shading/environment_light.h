@@ -85,6 +85,9 @@ struct EnvironmentLight {
     float pdf_at(const Vec3& point, const Vec3& direction, const EmitterPoint&) const {
         return pdf(point, direction);
     }
+    // What a ray along `direction` that reaches the light sees: radiance(direction), from
+    // infinitely far, so no point of arrival (a ray leaving the scene passes EmitterPoint{}).
+    Vec3 emitted(const Vec3& direction, const EmitterPoint&) const { return radiance(direction); }
 
   private:
     // The direction in the image's frame (the rotation undone), and back.

@@ -1,11 +1,22 @@
 #pragma once
 // The lights the integrator samples. Every light type provides
+//   static constexpr const char* kName;  // its scene-file "type"
+//   template <typename F> void fields(F&);  // its scene-file fields (core/shapes/shape_fields.h),
+//   std::optional<FieldProblem> problem() const;  // and what they cannot say alone
 //   bool sample(const Vec3& point, const glm::vec2& u, LightSample& out) const;
+//   float pdf(const Vec3& point, const Vec3& direction) const;  // 0 for the delta lights
+//   static constexpr bool kDelta;  // a point or a direction: no ray hits it
 //   int sample_count() const;  // points per shading point: 1, or an area light's `samples`
 //   void describe(std::ostream&) const;  // what follows kName in `rayo info` (light_text.h)
+// and, unless kDelta, what a ray that reaches it needs (multiple importance sampling):
+//   float pdf_at(const Vec3& point, const Vec3& direction, const EmitterPoint& at) const;
+//   Vec3 emitted(const Vec3& direction, const EmitterPoint& at) const;
+// optionally `form(f)`, a choice read before fields() that decides them (an area light's shape),
+// and `finish()`, called once the fields are read (a spot's cosines from its angles).
 // (shading/light_sample.h; u in [0,1)² picks a point on lights with an extent). Adding a light
-// type is its file pair and its entry in the list below; the integrator only calls
-// sample_light, light_sample_count and light_sample_u (docs/architecture.md, "Extension points").
+// type is its file pair and its entry in the list below; the integrators call the helpers below
+// (sample_light, light_pdf, light_pdf_at, light_emitted, light_sample_count, light_sample_u),
+// never a light type (docs/architecture.md, "Adding a light").
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -53,6 +64,21 @@ inline float light_pdf_at(const Light& light, const Vec3& point, const Vec3& dir
                 return 0.0f;
             } else {
                 return l.pdf_at(point, direction, at);
+            }
+        },
+        light);
+}
+// The radiance a ray along `direction` (unit) carries back from the light it reaches at `at`, a
+// point of the light's surface (SurfaceCoefficients::emitter_light names the light of a hit's
+// material); a ray that leaves the scene reaches the environment, infinitely far, and passes
+// EmitterPoint{}. None for the delta lights, which no ray reaches.
+inline Vec3 light_emitted(const Light& light, const Vec3& direction, const EmitterPoint& at) {
+    return std::visit(
+        [&](const auto& l) {
+            if constexpr (std::decay_t<decltype(l)>::kDelta) {
+                return Vec3(0.0f);
+            } else {
+                return l.emitted(direction, at);
             }
         },
         light);

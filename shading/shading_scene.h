@@ -20,14 +20,15 @@ struct ShadingScene {
     Vec3 ambient_light{1.0f};       // Ia, seed 000 eq. [20]
     Vec3 background{0.0f};
     Fog fog;  // none by default (density 0)
-    // The EnvironmentLight among `lights` (at most one), or -1.
+    // The light among `lights` that rays leaving the scene reach (an EnvironmentLight, at most
+    // one), or -1.
     int32_t environment = -1;
 
     // What a ray that leaves the scene along `direction` sees: the environment, else the
     // background colour.
     Vec3 escaped(const Vec3& direction) const {
         if (environment < 0) return background;
-        return std::get<EnvironmentLight>(lights[size_t(environment)]).radiance(direction);
+        return light_emitted(lights[size_t(environment)], direction, EmitterPoint{});
     }
 };
 

@@ -45,9 +45,6 @@ constexpr int kMaxTextureHeightSide = 4096;
 constexpr uint64_t kMaxVoxels = uint64_t(1) << 28;
 constexpr int kMaxVoxelSide = 1 << 16;
 
-// Most points an area light may be sampled at per shading point (each is a shadow ray).
-constexpr int kMaxAreaLightSamples = 4096;
-
 // A --stats line for an `auto` the reader decided by the size of an object's mesh
 // (SceneDescription::method_choices): "voxels /objects/3 (auto): mesh, 42216 triangles (<=
 // 671088, ~4 MB)".
@@ -757,7 +754,27 @@ class SceneParser {
     bool image_map(const Json& object, const std::string& pointer, const char* key, ImageMap& map,
                    Vec3& factor) const;
     Light parse_light(const Json& value, const std::string& pointer) const;
-    AreaLight parse_area_light(const Json& value, const std::string& pointer) const;
+    // A light read by its declaration (shading/light.h): its form first when it has one (an
+    // area light's "shape"), which decides the fields it declares and so the keys it allows.
+    template <typename L>
+    L read_light(const Json& value, const std::string& pointer) const;
+    // Reads a light's form(): each choice required, since it decides which fields follow.
+    struct FormReader {
+        const SceneParser& parser;
+        const Json& object;
+        const std::string& pointer;
+        template <typename E>
+        void choice(const SettingInfo& info, E& member, std::initializer_list<Choice<E>> choices) {
+            std::string names;
+            for (const Choice<E>& c : choices)
+                names += std::string(names.empty() ? "" : ", ") + "\"" + c.name + "\"";
+            const Json& v = parser.require(object, pointer, info.name, "one of " + names);
+            if (const std::optional<std::string> problem =
+                    read_choice(setting_value(v), choices, member)) {
+                parser.fail(child(pointer, info.name), *problem);
+            }
+        }
+    };
     // The environment light, at "/environment" or as a light of type "environment"
     // (`extra_keys`: {"type"}): its fields() and its "image".
     EnvironmentLight parse_environment(const Json& value, const std::string& pointer,
@@ -1303,8 +1320,8 @@ Attenuation SceneParser::parse_attenuation(const Json& value, const std::string&
 
 Light SceneParser::parse_light(const Json& value, const std::string& pointer) const {
     require_object(value, pointer, "a light object");
-    // The registered lights (shading/light.h), by their kName: each read by its own fields(),
-    // but the area light, whose shape decides its fields (parse_area_light).
+    // The registered lights (shading/light.h), by their kName: each read by its own form() and
+    // fields(), the environment with its "image" besides.
     std::vector<std::string> names;
     for_each_light([&](auto l) { names.push_back(decltype(l)::kName); });
     std::vector<std::string> quoted;
@@ -1315,15 +1332,41 @@ Light SceneParser::parse_light(const Json& value, const std::string& pointer) co
     for_each_light([&](auto l) {
         using L = decltype(l);
         if (type != L::kName) return;
-        if constexpr (std::is_same_v<L, AreaLight>) {
-            light = parse_area_light(value, pointer);
-        } else if constexpr (std::is_same_v<L, EnvironmentLight>) {
+        if constexpr (std::is_same_v<L, EnvironmentLight>) {
             light = parse_environment(value, pointer, {"type"});
         } else {
-            light = read_record<L>(value, pointer, {"type"});
+            light = read_light<L>(value, pointer);
         }
     });
     return *light;
+}
+
+// Whether a light has a form() (shading/light.h): a choice read before its fields.
+template <typename L, typename = void>
+struct has_form : std::false_type {};
+template <typename L>
+struct has_form<L, std::void_t<decltype(std::declval<L&>().form(std::declval<int&>()))>>
+    : std::true_type {};
+
+template <typename L>
+L SceneParser::read_light(const Json& value, const std::string& pointer) const {
+    L light;
+    FieldNames keys;
+    keys.names.push_back("type");
+    if constexpr (has_form<L>::value) {
+        FormReader form{*this, value, pointer};
+        light.form(form);
+        light.form(keys);
+    }
+    light.fields(keys);
+    check_keys(value, pointer, keys.names);
+    FieldReader reader{*this, value, pointer};
+    light.fields(reader);
+    if constexpr (has_finish<L>::value) light.finish();
+    if (const std::optional<FieldProblem> problem = light.problem()) {
+        fail(child(pointer, problem->field), problem->message);
+    }
+    return light;
 }
 
 EnvironmentLight SceneParser::parse_environment(const Json& value, const std::string& pointer,
@@ -1339,52 +1382,6 @@ EnvironmentLight SceneParser::parse_environment(const Json& value, const std::st
         light.map = read_environment_image(join_path(m_base_dir, image->get<std::string>()),
                                            m_source + "#" + image_pointer, m_access);
     }
-    return light;
-}
-
-AreaLight SceneParser::parse_area_light(const Json& value, const std::string& pointer) const {
-    AreaLight light;
-    const std::string shape =
-        choice(require(value, pointer, "shape", "\"rectangle\", \"disk\" or \"sphere\""),
-               child(pointer, "shape"), {"rectangle", "disk", "sphere"});
-    const std::vector<std::string> common = {"type", "shape", "samples", "color", "intensity"};
-    auto keys = [&](std::initializer_list<const char*> own) {
-        std::vector<std::string> allowed = common;
-        allowed.insert(allowed.end(), own.begin(), own.end());
-        check_keys(value, pointer, allowed);
-    };
-    if (shape == "rectangle") {
-        keys({"corner", "edge1", "edge2"});
-        light.shape = AreaLight::Shape::Rectangle;
-        light.corner =
-            vec3(require(value, pointer, "corner", "[x, y, z]"), child(pointer, "corner"));
-        light.edge1 = vec3(require(value, pointer, "edge1", "[x, y, z]"), child(pointer, "edge1"));
-        light.edge2 = vec3(require(value, pointer, "edge2", "[x, y, z]"), child(pointer, "edge2"));
-        const float area = glm::length(glm::cross(light.edge1, light.edge2));
-        if (!(area > 0.0f) || !std::isfinite(area)) {
-            fail(child(pointer, "edge2"),
-                 "expected edge1 and edge2 to span a rectangle of non-zero area (not parallel, "
-                 "neither zero)");
-        }
-    } else {
-        light.shape = shape == "disk" ? AreaLight::Shape::Disk : AreaLight::Shape::Sphere;
-        if (shape == "disk") {
-            keys({"center", "normal", "radius"});
-            light.normal = direction(require(value, pointer, "normal", "[x, y, z], non-zero"),
-                                     child(pointer, "normal"));
-        } else {
-            keys({"center", "radius"});
-        }
-        light.center =
-            vec3(require(value, pointer, "center", "[x, y, z]"), child(pointer, "center"));
-        light.radius = real(require(value, pointer, "radius", "a number > 0"),
-                            child(pointer, "radius"), Bound::Positive);
-    }
-    if (const Json* v = find(value, "samples")) {
-        light.samples = integer(*v, child(pointer, "samples"), 1, kMaxAreaLightSamples);
-    }
-    light.color = colour_or(value, pointer, "color", Vec3(1.0f));
-    light.intensity = real_or(value, pointer, "intensity", 1.0f, Bound::NonNegative);
     return light;
 }
 

@@ -160,7 +160,7 @@ Vec3 PathIntegrator::escaped(const Vec3& direction, bool specular, float bsdf_pd
                              const Vec3& from) const {
     if (m_scene.environment < 0) return specular ? m_scene.background : Vec3(0.0f);
     const Light& light = m_scene.lights[size_t(m_scene.environment)];
-    const Vec3 radiance = std::get<EnvironmentLight>(light).radiance(direction);
+    const Vec3 radiance = light_emitted(light, direction, EmitterPoint{});
     if (specular || m_settings.strategy == LightStrategy::Bsdf) return radiance;
     if (m_settings.strategy == LightStrategy::Light) return Vec3(0.0f);
     return radiance * power_heuristic(bsdf_pdf, light_pdf(light, from, direction));
