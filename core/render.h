@@ -47,24 +47,29 @@ struct TileSettings {
     // Stratified: spp samples per pixel. Adaptive: corner subdivision, spp unused.
     AntiAliasing aa = AntiAliasing::Stratified;
     AdaptiveSettings adaptive;
+    // The index of the first sample of each pixel: 0, or a progressive render's pass times its
+    // spp (core/progressive.h). The pass's samples are stratified among themselves.
+    uint32_t first_sample = 0;
 };
 
-// Camera ray for sample `s` of pixel (x, y): stratified jitter on the film (the pixel centre when
-// spp = 1) and on the lens. False where the camera has no ray (e.g. outside a fisheye's circle).
+// Camera ray for sample `s` of spp samples of pixel (x, y), whose index in the render is
+// first_sample + s: stratified jitter on the film (the pixel centre when spp = 1) and on the
+// lens. False where the camera has no ray (e.g. outside a fisheye's circle).
 template <typename Camera>
 bool pixel_ray(const Camera& camera, int x, int y, uint32_t s, uint32_t spp, Ray& ray,
-               PixelSample& sample) {
+               PixelSample& sample, uint32_t first_sample = 0) {
     const auto ux = static_cast<uint32_t>(x), uy = static_cast<uint32_t>(y);
-    sample = PixelSample{ux, uy, s, spp};
-    const PixelOffset o = stratified_offset(ux, uy, s, spp);
+    sample = PixelSample{ux, uy, first_sample + s, spp};
+    const PixelOffset o = stratified_offset(ux, uy, s, spp, 0, first_sample);
     const glm::vec2 film(static_cast<float>(x) + o.dx, static_cast<float>(y) + o.dy);
-    return camera.generate_ray(film, lens_sample(ux, uy, s, spp), ray);
+    return camera.generate_ray(film, lens_sample(ux, uy, s, spp, first_sample), ray);
 }
 
 // One tile's pixels into `rgba` (tile-local, row-major).
 template <typename Camera, typename Integrator>
 void render_tile(const Camera& camera, const Integrator& integrator, bool coherent, uint32_t spp,
-                 float inverse_spp, const Tile& tile, float* rgba, RayCounters& counters) {
+                 float inverse_spp, const Tile& tile, float* rgba, RayCounters& counters,
+                 uint32_t first_sample = 0) {
     const int pixels = static_cast<int>(tile.pixel_count());
     auto store = [&](int i, const Vec3& sum, uint32_t rays) {
         float* p = rgba + static_cast<size_t>(i) * 4;
@@ -82,7 +87,7 @@ void render_tile(const Camera& camera, const Integrator& integrator, bool cohere
             for (uint32_t s = 0; s < spp; ++s) {
                 Ray ray;
                 PixelSample sample;
-                if (!pixel_ray(camera, x, y, s, spp, ray, sample)) continue;
+                if (!pixel_ray(camera, x, y, s, spp, ray, sample, first_sample)) continue;
                 sum += integrator.radiance(ray, sample, counters);
                 ++rays;
             }
@@ -117,7 +122,8 @@ void render_tile(const Camera& camera, const Integrator& integrator, bool cohere
                     for (int i = 0; i < n; ++i) {
                         const int x = tile.x0 + bx + (first + i) % block_width;
                         const int y = tile.y0 + by + (first + i) / block_width;
-                        if (!pixel_ray(camera, x, y, s, spp, rays[batch], samples[batch])) {
+                        if (!pixel_ray(camera, x, y, s, spp, rays[batch], samples[batch],
+                                       first_sample)) {
                             continue;
                         }
                         owner[batch++] = i;
@@ -184,7 +190,7 @@ RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
                             .render(tile, rgba.data());
                     } else {
                         render_tile(camera, integrator, settings.coherent, spp, inverse_spp, tile,
-                                    rgba.data(), local);
+                                    rgba.data(), local, settings.first_sample);
                     }
                     sink.write_tile(tile, rgba.data());
                     if (progress) progress->add(tile.pixel_count());

@@ -8,7 +8,7 @@
 namespace rayo {
 
 PixelOffset stratified_offset(uint32_t x, uint32_t y, uint32_t s, uint32_t spp,
-                              uint32_t first_dimension) {
+                              uint32_t first_dimension, uint32_t first_sample) {
     if (spp <= 1) return {0.0f, 0.0f};
     uint32_t columns = 1;
     for (uint32_t c = 1; c * c <= spp; ++c) {
@@ -16,8 +16,8 @@ PixelOffset stratified_offset(uint32_t x, uint32_t y, uint32_t s, uint32_t spp,
     }
     const uint32_t rows = spp / columns;
     const uint32_t column = s % columns, row = s / columns;
-    const float jitter_x = sample_uniform(x, y, s, first_dimension),
-                jitter_y = sample_uniform(x, y, s, first_dimension + 1);
+    const float jitter_x = sample_uniform(x, y, first_sample + s, first_dimension),
+                jitter_y = sample_uniform(x, y, first_sample + s, first_dimension + 1);
     // (column + jitter) rounds up to column + 1 in float for jitter = 1 − 2⁻²⁴: keep the offset
     // inside the pixel, [-0.5, 0.5).
     constexpr float kBelowHalf = 0.49999997f;

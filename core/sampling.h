@@ -35,17 +35,21 @@ inline float sample_uniform(uint32_t x, uint32_t y, uint32_t sample, uint32_t di
 // columns × rows strata (columns the largest divisor of spp not above √spp), one jittered sample
 // each. One sample per pixel goes through the pixel centre. The jitter uses hash dimensions
 // first_dimension and first_dimension + 1: 0 for the film position, kLensDimension for the lens.
+// A progressive render's later passes (core/progressive.h) stratify each pass's spp samples
+// alike but hash the sample's index in the whole render, first_sample + s, so that no two
+// passes repeat a jitter; first_sample 0 is a plain render's sample set.
 struct PixelOffset {
     float dx, dy;
 };
 PixelOffset stratified_offset(uint32_t x, uint32_t y, uint32_t s, uint32_t spp,
-                              uint32_t first_dimension = 0);
+                              uint32_t first_dimension = 0, uint32_t first_sample = 0);
 
 // The lens sample of sample `s` of pixel (x, y), in [0, 1)²: stratified like the film position
 // but from its own hash dimensions; the lens centre (0.5, 0.5) at one sample per pixel.
 constexpr uint32_t kLensDimension = 2;
-inline glm::vec2 lens_sample(uint32_t x, uint32_t y, uint32_t s, uint32_t spp) {
-    const PixelOffset o = stratified_offset(x, y, s, spp, kLensDimension);
+inline glm::vec2 lens_sample(uint32_t x, uint32_t y, uint32_t s, uint32_t spp,
+                             uint32_t first_sample = 0) {
+    const PixelOffset o = stratified_offset(x, y, s, spp, kLensDimension, first_sample);
     return glm::vec2(o.dx + 0.5f, o.dy + 0.5f);
 }
 

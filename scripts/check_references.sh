@@ -71,6 +71,7 @@ khr-materials-ior ~ KHR_materials_ior ~
 khr-texture-transform ~ KHR_texture_transform ~
 lafortune-willems-1994 ~ Lafortune ~ Lafortune 1994
 lambert-1760 ~ Lambert 1760|Lambert's (contour|formula) ~ Lambert 1760
+law-kelton-2000 ~ batch means ~ Law 2000, Kelton 2000
 lengyel-2001 ~ Lengyel ~ Lengyel 2001
 lorensen-cline-1987 ~ Lorensen ~ Lorensen 1987
 malley-1988 ~ Malley ~ Malley 1988

@@ -23,8 +23,8 @@
 #include <string>
 #include <vector>
 
-#include "apps/cli/int_flag.h"
 #include "apps/cli/flag_table.h"
+#include "apps/cli/int_flag.h"
 #include "apps/cli/render_options.h"
 #include "apps/cli/setting_flags.h"
 #include "apps/cli/usage_error.h"
@@ -667,6 +667,19 @@ std::string aa_summary(const RenderSettings& s) {
     return text.str();
 }
 
+// "64spp (16 passes, noise 1.92%, stopped by the noise target)": a progressive render's
+// samples per pixel and why it stopped (core/progressive.h).
+std::string progressive_summary(const ProgressiveResult& p) {
+    std::ostringstream text;
+    text << p.spp << "spp (" << p.passes << (p.passes == 1 ? " pass" : " passes");
+    if (!std::isnan(p.noise)) {
+        text.precision(2);
+        text << ", noise " << std::fixed << p.noise * 100.0 << "%";
+    }
+    text << ", stopped by " << progressive_stop_name(p.stop) << ")";
+    return text.str();
+}
+
 // What decides the pixels of a render (core/image/partial_render.h): a resumed render must
 // match it. Threads, streaming, --single-rays (the same bits by design) and the output's
 // encoding (applied to the saved floats at the end) may change between runs.
@@ -981,6 +994,23 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     } else {
         options.metadata["rayo:spp"] = std::to_string(d.settings.spp);
     }
+    const ProgressiveSettings& progressive = d.settings.progressive;
+    if (progressive.enabled()) {
+        // Known only after the last pass: set again below where the file is written then.
+        options.metadata["rayo:spp"] = "progressive, passes of " +
+                                       std::to_string(progressive.pass_spp) + ", at most " +
+                                       std::to_string(progressive.max_spp);
+        if (args.resume) {
+            throw UsageError(
+                "--resume: a progressive render (--time-limit, --noise-target) keeps no tile "
+                "before its last pass; render it again");
+        }
+        if (MpiWorld::distributed()) {
+            throw UsageError(
+                "--time-limit, --noise-target: not available under mpirun; render in one "
+                "process, or give a fixed --spp");
+        }
+    }
     options.metadata["rayo:threads"] =
         std::to_string(threads > 0 ? threads : default_thread_count());
     if (MpiWorld::distributed()) options.metadata["rayo:ranks"] = std::to_string(MpiWorld::size());
@@ -1057,6 +1087,12 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     }
     if (partial && !partial->complete()) {  // a stop request ended the hand-out of tiles
         discard_unfinished(stream);         // nothing under the output's name
+        if (result.progressive) {
+            err << "rayo: interrupted in pass " << result.progressive->passes + 1
+                << "; nothing kept (a progressive render keeps its image only after its last "
+                   "pass)\n";
+            return 128 + stop_signal();
+        }
         const int done = partial->tiles_done();
         err << "rayo: interrupted: " << done << " of " << partial->tile_count() << " tiles done; "
             << (done > 0 ? "resume with --resume (the tiles are kept in " + partial->path() + ")"
@@ -1072,6 +1108,9 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         write_s = stream->finish_seconds();
     } else {
         options.metadata["rayo:render_seconds"] = std::to_string(result.render_seconds);
+        if (result.progressive) {
+            options.metadata["rayo:spp"] = std::to_string(result.progressive->spp);
+        }
         start = std::chrono::steady_clock::now();
         write_image(film ? *film : result.film, output, options);
         write_s = seconds_since(start);
@@ -1093,6 +1132,7 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
             result.render_seconds > 0 ? c.total_rays() / result.render_seconds / 1e6 : 0.0;
         out << "rayo: " << output << " " << cam.width << "x" << cam.height << " "
             << (d.settings.aa == AntiAliasing::Adaptive ? "adaptive"
+                : result.progressive                    ? progressive_summary(*result.progressive)
                                                         : std::to_string(d.settings.spp) + "spp")
             << (d.settings.integrator.index() == 0
                     ? std::string()

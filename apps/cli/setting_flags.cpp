@@ -75,8 +75,9 @@ struct HelpCollector {
                            std::to_string(member)});
     }
     void real(const SettingInfo& info, const float& member, double min, double max) {
-        entries.push_back(
-            {setting_flag(info), "X", info.help, real_range_text(min, max), number_text(member)});
+        // A default below the range is a setting that is off until given (time_limit).
+        entries.push_back({setting_flag(info), "X", info.help, real_range_text(min, max),
+                           member < min ? "off" : number_text(member)});
     }
     void toggle(const SettingInfo& info, const bool& member) {
         entries.push_back({setting_flag(info), "", info.help, "", member ? "on" : "off"});

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 #include "core/accel.h"
@@ -17,6 +18,7 @@
 #include "core/embree_device.h"
 #include "core/error.h"
 #include "core/film.h"
+#include "core/progressive.h"
 #include "core/render.h"
 #include "core/scene_bounds.h"
 #include "shading/cutouts.h"
@@ -215,9 +217,25 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     }
 
     IntegratorContext context{accel, description.shading, radiosity.get(), images.get()};
+    const ProgressiveSettings& progressive = description.settings.progressive;
+    if (progressive.enabled() && (distribution != nullptr ||
+                                  (tiles != nullptr && static_cast<int>(tiles->size()) !=
+                                                           TileGrid(camera.width(), camera.height(),
+                                                                    description.settings.tile_size)
+                                                               .tile_count()))) {
+        // The CLI refuses these first (--resume, mpirun); a library caller gets this.
+        throw std::invalid_argument(
+            "a progressive render (time_limit, noise_target) runs in one process and renders "
+            "every tile");
+    }
+    if (progressive.enabled()) {
+        check_film_size(camera.width(), camera.height(), description.source + "#/render");
+    }
     if (images) {
-        context.pixel_spread =
-            camera.pixel_angle() / std::sqrt(static_cast<float>(description.settings.spp));
+        // The texture filter's footprint: a pixel over the samples' stratification.
+        const int stratified_spp =
+            progressive.enabled() ? progressive.pass_spp : description.settings.spp;
+        context.pixel_spread = camera.pixel_angle() / std::sqrt(static_cast<float>(stratified_spp));
     }
     if (sink == nullptr && writes_image) result.film = Film(camera.width(), camera.height());
     TileSink& target = sink ? *sink : result.film;
@@ -241,7 +259,9 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
             pixels = 0;
             for (const int index : *tiles) pixels += grid.tile(index).pixel_count();
         }
-        ProgressReporter progress(pixels, "rendering", show_progress && writes_image && pixels > 0);
+        ProgressReporter progress(
+            pixels, "rendering",
+            show_progress && writes_image && pixels > 0 && !progressive.enabled());
         if (tiles && tiles->empty()) {
             target.begin(grid);
             target.finish();
@@ -253,6 +273,14 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
                     using Integrator =
                         typename std::decay_t<decltype(integrator_settings)>::Integrator;
                     const Integrator integrator(context, integrator_settings);
+                    if (progressive.enabled()) {
+                        result.progressive =
+                            render_progressive(camera, integrator, settings, progressive,
+                                               static_cast<uint32_t>(progressive.max_spp), target,
+                                               show_progress && writes_image);
+                        result.counters = result.progressive->counters;
+                        return;
+                    }
                     if (distribution == nullptr) {
                         result.counters =
                             render_tiles(camera, integrator, settings, target, &progress,

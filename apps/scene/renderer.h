@@ -6,6 +6,7 @@
 #include "apps/scene/shape_method_choice.h"
 #include "apps/scene/sphere_method_choice.h"
 #include "core/film.h"
+#include "core/progressive_settings.h"
 #include "core/stats.h"
 #include "core/tile_distribution.h"
 #include "core/tile_sink.h"
@@ -34,6 +35,8 @@ struct RenderResult {
     std::vector<ProcessWork> processes;
     // Image textures (docs/textures.md): how many, and the texture cache's memory.
     ImageTextureStats textures;
+    // A progressive render's passes, samples and noise (core/progressive.h); else empty.
+    std::optional<ProgressiveResult> progressive;
 };
 
 // threads = 0: all cores. Throws InputError for an invalid camera. The tiles go to `sink` when

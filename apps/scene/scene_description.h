@@ -8,6 +8,7 @@
 #include "apps/scene/gltf_nodes.h"
 #include "apps/scene/input_file.h"
 #include "core/adaptive_aa.h"
+#include "core/progressive_settings.h"
 #include "core/scene.h"
 #include "core/setting.h"
 #include "core/shape_method.h"
@@ -27,6 +28,7 @@ enum class GlobalIllumination { None, Radiosity };
 // The largest --spp / "spp": the stratified offsets come from a 32-bit hash; more gains nothing
 // visible (docs/limits.md).
 constexpr int kMaxSpp = 1 << 16;
+static_assert(ProgressiveSettings{}.max_spp == kMaxSpp, "a progressive render's default cap");
 
 struct RenderSettings {
     int spp = 1;
@@ -49,6 +51,9 @@ struct RenderSettings {
     // The image-texture cache's limit ("texture_cache_mb", --texture-cache): decoded tiles
     // held at once by the render's TextureSystem (shading/image_texture.h).
     float texture_cache_mb = kDefaultTextureCacheMB;
+    // Passes until a time or a noise level ("time_limit", "noise_target", "pass_spp",
+    // "max_spp"; core/progressive.h), in place of spp.
+    ProgressiveSettings progressive;
 
     // The Whitted integrator's settings (std::get: only when it is the one in use).
     WhittedSettings& whitted() { return std::get<WhittedSettings>(integrator); }
@@ -58,7 +63,22 @@ struct RenderSettings {
     // (core/setting.h): the JSON reader and the command line both read them from here.
     template <typename F>
     void fields(F& f) {
-        f.integer({"spp", "samples per pixel, stratified jitter"}, spp, 1, kMaxSpp);
+        f.integer({"spp",
+                   "samples per pixel, stratified jitter (not used with a time limit or a "
+                   "noise target)"},
+                  spp, 1, kMaxSpp);
+        f.real({"time_limit",
+                "progressive: stop after the pass that crosses this many seconds of rendering "
+                "(docs/path-tracing.md)"},
+               progressive.time_limit, 1e-3, 1e9);
+        f.real({"noise_target",
+                "progressive: stop when the estimated relative RMS noise of the image falls to "
+                "this (0.02 is 2%; at least 4 passes)"},
+               progressive.noise_target, 1e-6, 10.0);
+        f.integer({"pass_spp", "progressive: samples per pixel of each pass"}, progressive.pass_spp,
+                  2, 1024);
+        f.integer({"max_spp", "progressive: the most samples a pixel gets, in whole passes"},
+                  progressive.max_spp, 2, kMaxSpp);
         f.integer({"tile_size", "tile side in pixels, a multiple of 16"}, tile_size, kCoherentBlock,
                   kMaxTileSize);
         f.choice({"aa",
@@ -92,6 +112,16 @@ struct RenderSettings {
         if (!valid_tile_size(tile_size)) {
             return FieldProblem{"tile_size", "expected " + tile_size_expectation() + ", got " +
                                                  std::to_string(tile_size)};
+        }
+        if (progressive.enabled() && aa == AntiAliasing::Adaptive) {
+            return FieldProblem{"aa",
+                                "adaptive antialiasing has its own stopping rule; a time limit "
+                                "or noise target renders stratified passes"};
+        }
+        if (progressive.enabled() && progressive.max_spp < progressive.pass_spp) {
+            return FieldProblem{"max_spp", std::to_string(progressive.max_spp) +
+                                               " is below one pass of pass_spp " +
+                                               std::to_string(progressive.pass_spp) + " samples"};
         }
         return std::nullopt;
     }
