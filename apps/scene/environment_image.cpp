@@ -19,9 +19,9 @@ std::shared_ptr<const EnvironmentMap> read_environment_image(const std::string& 
     const int width = in->width(), height = in->height();
     const uint64_t pixels = uint64_t(width) * uint64_t(height);
     const std::string size = std::to_string(width) + "x" + std::to_string(height);
-    if (pixels > kMaxTexturePixels || in->depth() > 1) {
+    if (pixels > kMaxEnvironmentPixels || in->depth() > 1) {
         throw InputError(where, what + " is " + size + ": the limit is " +
-                                    std::to_string(kMaxTexturePixels) + " pixels");
+                                    std::to_string(kMaxEnvironmentPixels) + " pixels");
     }
     if (height < 1 || width != 2 * height) {
         throw InputError(where, what + " is " + size +
@@ -48,6 +48,7 @@ std::shared_ptr<const EnvironmentMap> read_environment_image(const std::string& 
         }
         texels[i] = Vec3(c[0], c[1], c[2]);
     }
+    std::vector<float>().swap(values);  // freed before the map builds its distribution
     return std::make_shared<const EnvironmentMap>(width, height, std::move(texels));
 }
 

@@ -15,13 +15,16 @@ HeightSamples read_height_image(const std::string& path, const std::string& wher
     ImageReader* in = file.reader.get();
     const int width = in->width(), height = in->height();
     const uint64_t samples = uint64_t(width) * uint64_t(height);
-    if (width < 2 || height < 2 || in->depth() > 1 || samples > kMaxHeightSamples) {
-        throw InputError(where, what + " is " + std::to_string(width) + "x" +
-                                    std::to_string(height) +
-                                    ": expected at least 2x2 and at most " +
-                                    std::to_string(kMaxHeightSamples) + " samples");
-    }
     const int channels = in->channels() >= 3 ? 3 : 1;
+    const uint64_t most = kMaxHeightSamples / uint64_t(channels);
+    if (width < 2 || height < 2 || in->depth() > 1 || samples > most) {
+        throw InputError(
+            where, what + " is " + std::to_string(width) + "x" + std::to_string(height) +
+                       ": expected at least 2x2 and at most " + std::to_string(most) + " samples" +
+                       (channels == 3 ? " (a colour image; a grey one may have " +
+                                            std::to_string(kMaxHeightSamples) + ")"
+                                      : ""));
+    }
     std::vector<float> pixels(samples * size_t(channels));
     // Integer formats convert to value/max in [0, 1] at their full depth; float stays float.
     if (!in->read_floats(channels, pixels.data())) {

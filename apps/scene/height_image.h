@@ -13,9 +13,12 @@
 
 namespace rayo {
 
-// Most samples a height field may have (16384², 1 GiB of floats); the charts of
+// Most floats a height image may decode to: 2^27 samples of a grey image (11585², 512 MiB), a
+// third of that for a colour image, which is read as three floats a sample before its
+// luminance is taken. About 6.5 bytes a grey sample and 18 a colour one at the peak, so the worst
+// small file stays near 1 GB (docs/limits.md, "Memory from small files"); the charts of
 // docs/heightfields.md go to 8192².
-constexpr uint64_t kMaxHeightSamples = uint64_t(1) << 28;
+constexpr uint64_t kMaxHeightSamples = uint64_t(1) << 27;
 
 struct HeightSamples {
     int columns = 0;

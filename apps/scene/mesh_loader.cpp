@@ -1409,6 +1409,17 @@ void refuse_required_extensions(const nlohmann::json& root, const std::string& p
                                ", which rayo does not support (it supports " + supported + ")");
 }
 
+// tinygltf holds about 1 KB a node (its record and its parse of the node's JSON), so the node
+// count bounds what a small file of empty nodes can take (docs/limits.md, "glTF").
+void refuse_too_many_nodes(const nlohmann::json& root, const std::string& path) {
+    if (!root.is_object()) return;  // tinygltf reports the malformed file
+    const auto nodes = root.find("nodes");
+    if (nodes == root.end() || !nodes->is_array() || nodes->size() <= kMaxGltfNodes) return;
+    throw InputError(path, "the file has " + std::to_string(nodes->size()) +
+                               " nodes; the limit is " + std::to_string(kMaxGltfNodes) +
+                               " (about 1 KB of memory each)");
+}
+
 }  // namespace
 
 TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials,
@@ -1424,13 +1435,18 @@ TriangleMesh load_gltf(const std::string& path, std::vector<Material>& materials
     std::string err, warn;
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     const std::string json_text = gltf_json_text(bytes, binary);
-    nlohmann::json root = nlohmann::json::parse(json_text, nullptr, /*allow_exceptions=*/false);
-    refuse_required_extensions(root, path);
-    // Draco-compressed primitives: tinygltf reads the file without their indices, and
-    // decode_draco_primitives gives them decoded ones (apps/scene/gltf_draco.h).
     std::string stripped;
-    if (root.is_object() && strip_draco_indices(root)) {
-        stripped = binary ? replace_glb_json(bytes, root.dump()) : root.dump();
+    {
+        // This parse is freed before tinygltf parses the text again: both at once were the
+        // peak of a file of many nodes (docs/limits.md, "glTF").
+        nlohmann::json root = nlohmann::json::parse(json_text, nullptr, /*allow_exceptions=*/false);
+        refuse_required_extensions(root, path);
+        refuse_too_many_nodes(root, path);
+        // Draco-compressed primitives: tinygltf reads the file without their indices, and
+        // decode_draco_primitives gives them decoded ones (apps/scene/gltf_draco.h).
+        if (root.is_object() && strip_draco_indices(root)) {
+            stripped = binary ? replace_glb_json(bytes, root.dump()) : root.dump();
+        }
     }
     const std::string& input = stripped.empty() ? bytes : stripped;
     const auto size = static_cast<unsigned int>(input.size());  // < kMaxMeshFileBytes + padding

@@ -17,6 +17,9 @@ namespace rayo {
 // The deepest glTF node hierarchy read (the walk recurses once per level; real assets nest a
 // few dozen levels; docs/limits.md).
 constexpr size_t kMaxGltfNodeDepth = 1000;
+// Most nodes a glTF file may have: at about 1 KB each while tinygltf reads them, 2^19 nodes keep
+// the worst file of empty nodes near 0.7 GB (docs/limits.md, "glTF").
+constexpr size_t kMaxGltfNodes = size_t(1) << 19;
 
 // What an import did besides building the mesh.
 struct MeshImportStats {
