@@ -14,7 +14,9 @@ struct ProgressiveSettings {
     float time_limit = 0.0f;    // seconds; 0: none
     float noise_target = 0.0f;  // relative RMS standard error; 0: none
     int pass_spp = 4;           // samples per pixel of each pass
-    int max_spp = 1 << 16;      // the most samples a pixel gets (whole passes); spp's bound
+    // The most samples a pixel gets (whole passes): Cycles' default cap, so that a target the
+    // scene cannot reach (fireflies keep a glass scene's noise up) still ends.
+    int max_spp = 4096;
 
     bool enabled() const { return time_limit > 0.0f || noise_target > 0.0f; }
 };

@@ -28,7 +28,7 @@ enum class GlobalIllumination { None, Radiosity };
 // The largest --spp / "spp": the stratified offsets come from a 32-bit hash; more gains nothing
 // visible (docs/limits.md).
 constexpr int kMaxSpp = 1 << 16;
-static_assert(ProgressiveSettings{}.max_spp == kMaxSpp, "a progressive render's default cap");
+static_assert(ProgressiveSettings{}.max_spp <= kMaxSpp, "a progressive render's default cap");
 
 struct RenderSettings {
     int spp = 1;
