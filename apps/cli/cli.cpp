@@ -37,6 +37,7 @@
 #include "apps/scene/renderer.h"
 #include "apps/scene/scene_loader.h"
 #include "bench/lab/accuracy_bench.h"
+#include "bench/lab/convergence_study.h"
 #include "bench/lab/shape_methods_study.h"
 #include "bench/lab/spd_scenes.h"
 #include "bench/lab/spd_suite.h"
@@ -76,6 +77,9 @@ usage:
                                   (gnuplot) in DIR
   rayo bench suite [options]      the seven SPD scenes as a benchmark: a table, and with -o DIR
                                   suite.csv/.json/.md and a chart (docs/performance.md)
+  rayo bench convergence [SCENE] -o DIR [options]
+                                  speed against accuracy of path tracing and radiosity: error
+                                  against seconds, CSV and a chart (docs/path-tracing.md)
   rayo texture NAME [options]     write a procedural texture flat (the plane z = 0)
   rayo preview [SCENE] [options]  draw every object's outline from SCENE's camera, in well
                                   under a second: framing before a long render
@@ -120,7 +124,7 @@ const char* const kInfoHelp = R"(usage: rayo info SCENE
 )";
 
 // `rayo bench --help` and `rayo texture --help`: written from their flag tables
-// (kAccuracyFlags, kSuiteFlags, kTextureFlags, below).
+// (kAccuracyFlags, kSuiteFlags, kConvergenceFlags, kTextureFlags, below).
 std::string bench_help();
 std::string texture_help();
 
@@ -523,11 +527,66 @@ const CommandFlag<SuiteArgs> kSuiteFlags[] = {
      nullptr, switch_rule(), [](SuiteArgs& s, const FlagValue&) { s.write_nff = true; }},
 };
 
+// `rayo bench convergence`: path tracing against radiosity, error against seconds
+// (bench/lab/convergence_study.h).
+static_assert(kConvergenceSppRange.max == kMaxSpp, "--reference-spp takes render.spp's bounds");
+
+std::string patch_sizes_expectation() {
+    return "a comma-separated list of numbers > 0 (scene units)";
+}
+
+const CommandFlag<ConvergenceOptions> kConvergenceFlags[] = {
+    {"--output", "-o", "DIR", "write the files and the chart there (required)", nullptr,
+     text_rule(), [](ConvergenceOptions& c, const FlagValue& v) { c.dir = v.text; }},
+    {"--width", nullptr, "N", "images N pixels wide, as high as the scene's aspect says", "128",
+     integer_rule(kConvergenceWidthRange.min, kConvergenceWidthRange.max),
+     [](ConvergenceOptions& c, const FlagValue& v) { c.width = v.integer; }},
+    {"--reference-spp", nullptr, "N", "samples per pixel of the path-traced reference", "4096",
+     integer_rule(kConvergenceSppRange.min, kConvergenceSppRange.max),
+     [](ConvergenceOptions& c, const FlagValue& v) { c.reference_spp = v.integer; }},
+    {"--max-spp", nullptr, "N",
+     "path at 1, 4, 16, ... samples per pixel up to N (below --reference-spp)", "1024",
+     integer_rule(kConvergenceSppRange.min, kConvergenceSppRange.max),
+     [](ConvergenceOptions& c, const FlagValue& v) { c.max_spp = v.integer; }},
+    {"--whitted-spp", nullptr, "N", "samples per pixel of the Whitted + radiosity renders", "256",
+     integer_rule(kConvergenceSppRange.min, kConvergenceSppRange.max),
+     [](ConvergenceOptions& c, const FlagValue& v) { c.whitted_spp = v.integer; }},
+    {"--patch-sizes", nullptr, "A,B,...", "radiosity patch sizes",
+     "the scene's patch_size x 4, 2, 1, or its bounds' diagonal / 4, 8, 16",
+     custom_rule(patch_sizes_expectation),
+     [](ConvergenceOptions& c, const FlagValue& v) {
+         std::istringstream list(v.text);
+         c.patch_sizes.clear();
+         for (std::string item; std::getline(list, item, ',');) {
+             char* end = nullptr;
+             const double size = std::strtod(item.c_str(), &end);
+             if (item.empty() || *end != '\0' || !std::isfinite(size) || size <= 0.0) {
+                 refuse_flag(v, "expected " + patch_sizes_expectation() + ", got '" + v.text + "'");
+             }
+             c.patch_sizes.push_back(size);
+         }
+         if (c.patch_sizes.empty()) {
+             refuse_flag(v, "expected " + patch_sizes_expectation() + ", got '" + v.text + "'");
+         }
+     }},
+    {"--threads", nullptr, "N", "worker threads", "all cores",
+     integer_rule(kSuiteThreadsRange.min, kSuiteThreadsRange.max),
+     [](ConvergenceOptions& c, const FlagValue& v) { c.threads = v.integer; }},
+};
+
 std::string bench_help() {
     return "usage: rayo bench accuracy -o DIR [options]\n"
-           "       rayo bench suite [options]\n\n"
+           "       rayo bench suite [options]\n"
+           "       rayo bench convergence [SCENE] -o DIR [options]\n\n"
            "bench accuracy options (docs/stability.md, docs/shape-methods.md):\n" +
-           flags_help(kAccuracyFlags) + "\nbench suite options:\n" + flags_help(kSuiteFlags) + "\n";
+           flags_help(kAccuracyFlags) + "\nbench suite options:\n" + flags_help(kSuiteFlags) +
+           "\nbench convergence (docs/path-tracing.md, \"Convergence\"): the path integrator at 1, "
+           "4, 16, ...\nsamples per pixel and Whitted + radiosity at three patch sizes, each "
+           "measured against a\npath-traced reference: RMS error / the reference's mean "
+           "luminance against seconds\n(render + radiosity solve). SCENE: any scene or model "
+           "file; without one, the Cornell\nbox of scenes/cornell_box.json (built in).\n"
+           "bench convergence options:\n" +
+           flags_help(kConvergenceFlags) + "\n";
 }
 
 const char* option_use_text(OptionUse use) {
@@ -1412,12 +1471,33 @@ int run_bench_suite(const std::vector<std::string>& args, std::ostream& out) {
     return 0;
 }
 
+int run_bench_convergence(const std::vector<std::string>& args, std::ostream& out) {
+    ConvergenceOptions options;
+    bool has_scene = false;
+    parse_flags(kConvergenceFlags, args, 1, "bench", options, [&](const std::string& word) {
+        if (has_scene) throw UsageError("bench convergence: unexpected argument '" + word + "'");
+        options.scene = word;
+        has_scene = true;
+    });
+    if (options.dir.empty()) throw UsageError("bench convergence: -o DIR is required");
+    check_convergence_spp(options.max_spp, options.reference_spp);
+    const ConvergenceStudy study = run_convergence_study(options, out);
+    print_convergence_table(out, study, false);
+    write_convergence_files(options, study);
+    out << "wrote convergence.csv, convergence.json, convergence.md, convergence.gp and "
+           "convergence.png/.svg in "
+        << options.dir << "\n";
+    return 0;
+}
+
 int run_bench(const std::vector<std::string>& args, std::ostream& out) {
     if (!args.empty() && args[0] == "suite") return run_bench_suite(args, out);
+    if (!args.empty() && args[0] == "convergence") return run_bench_convergence(args, out);
     if (args.empty() || args[0] != "accuracy") {
         throw UsageError(
-            "bench: expected 'rayo bench accuracy -o DIR [options]' or 'rayo bench suite "
-            "[options]' (see rayo bench --help)");
+            "bench: expected 'rayo bench accuracy -o DIR [options]', 'rayo bench suite "
+            "[options]' or 'rayo bench convergence [SCENE] -o DIR [options]' (see rayo bench "
+            "--help)");
     }
     AccuracyArgs parsed;
     parse_flags(kAccuracyFlags, args, 1, "bench", parsed, [](const std::string& word) {

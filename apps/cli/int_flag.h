@@ -20,6 +20,10 @@ inline constexpr IntRange kSuiteWidthRange{2, 16384};
 inline constexpr IntRange kSuiteThreadsRange{1, 4096};
 // `rayo bench accuracy --size` (square images).
 inline constexpr IntRange kAccuracySizeRange{16, 4096};
+// `rayo bench convergence`: --width, and --reference-spp, --max-spp, --whitted-spp (render.spp's
+// bounds, apps/scene/scene_description.h kMaxSpp); --threads as the suite's.
+inline constexpr IntRange kConvergenceWidthRange{8, 4096};
+inline constexpr IntRange kConvergenceSppRange{1, 1 << 16};
 
 // `text` as an integer in [min_value, max_value], or the UsageError "--size: expected an integer
 // in [1, 64], got '0'".
@@ -37,6 +41,15 @@ inline int parse_int_flag(const std::string& flag, const std::string& text, int 
 
 inline int parse_int_flag(const std::string& flag, const std::string& text, IntRange range) {
     return parse_int_flag(flag, text, range.min, range.max);
+}
+
+// `rayo bench convergence`: the reference must have more samples than any row it measures, or
+// its own noise would be most of the error measured.
+inline void check_convergence_spp(int max_spp, int reference_spp) {
+    if (max_spp >= reference_spp) {
+        throw UsageError("--max-spp: expected fewer samples than --reference-spp " +
+                         std::to_string(reference_spp) + ", got " + std::to_string(max_spp));
+    }
 }
 
 }  // namespace rayo

@@ -11,6 +11,7 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <future>
 #include <map>
@@ -26,6 +27,7 @@
 #include "apps/scene/renderer.h"
 #include "apps/scene/shape_method_choice.h"
 #include "bench/lab/accuracy_bench.h"
+#include "bench/lab/convergence_study.h"
 #include "bench/lab/shape_methods_study.h"
 #include "bench/lab/spd_suite.h"
 #include "bench/lab/study_stop.h"
@@ -509,6 +511,62 @@ py::list bench_suite(const std::optional<std::string>& output, int size, int wid
     return out;
 }
 
+// `rayo bench convergence`: the rows of its table, each a dict; with output, its files. The
+// arguments take the flags' bounds and messages (apps/cli/int_flag.h).
+py::list bench_convergence(const std::optional<std::string>& output,
+                           const std::optional<std::string>& scene, int width, int reference_spp,
+                           int max_spp, int whitted_spp,
+                           const std::optional<std::vector<double>>& patch_sizes,
+                           const std::optional<int>& threads, const py::object& progress) {
+    ConvergenceOptions options;
+    if (output) options.dir = *output;
+    if (scene) options.scene = *scene;
+    options.width = study_int("--width", width, kConvergenceWidthRange);
+    options.reference_spp = study_int("--reference-spp", reference_spp, kConvergenceSppRange);
+    options.max_spp = study_int("--max-spp", max_spp, kConvergenceSppRange);
+    options.whitted_spp = study_int("--whitted-spp", whitted_spp, kConvergenceSppRange);
+    check_convergence_spp(options.max_spp, options.reference_spp);
+    if (patch_sizes) {
+        for (const double size : *patch_sizes) {
+            if (!std::isfinite(size) || size <= 0.0) {
+                throw UsageError("--patch-sizes: expected numbers > 0 (scene units), got " +
+                                 std::to_string(size));
+            }
+        }
+        if (patch_sizes->empty()) throw UsageError("--patch-sizes: expected at least one size");
+        options.patch_sizes = *patch_sizes;
+    }
+    if (threads) options.threads = study_int("--threads", *threads, kSuiteThreadsRange);
+    std::ostringstream log;
+    const ConvergenceStudy study = run_interruptible<ConvergenceStudy>(
+        [options, &log] {
+            ConvergenceStudy result = run_convergence_study(options, log);
+            if (!options.dir.empty()) write_convergence_files(options, result);
+            return result;
+        },
+        [] { return 0.0; }, progress);
+    py::list out;
+    for (const ConvergenceRow& r : study.rows) {
+        py::dict row;
+        row["scene"] = study.scene;
+        row["method"] = r.method;
+        row["spp"] = r.spp;
+        row["patch_size"] = r.patch_size;
+        row["patches"] = r.patches;
+        row["render_seconds"] = r.render_seconds;
+        row["solve_seconds"] = r.solve_seconds;
+        row["seconds"] = r.seconds;
+        row["rms_relative"] = r.rms_relative;
+        row["mean_relative"] = r.mean_relative;
+        row["width"] = study.width;
+        row["height"] = study.height;
+        row["threads"] = study.threads;
+        row["reference_spp"] = study.reference_spp;
+        out.append(row);
+    }
+    return out;
+}
+
 }  // namespace
 }  // namespace rayo
 
@@ -600,4 +658,15 @@ PYBIND11_MODULE(rayo, m) {
           py::arg("scenes") = std::vector<std::string>(), py::arg("progress") = py::none(),
           "The SPD suite (`rayo bench suite`): one dict per scene; with output, also its files. "
           "size, width, threads: as the flags, with their bounds; threads None: all cores.");
+    m.def("bench_convergence", &bench_convergence, py::arg("output") = py::none(), py::kw_only(),
+          py::arg("scene") = py::none(), py::arg("width") = 128, py::arg("reference_spp") = 4096,
+          py::arg("max_spp") = 1024, py::arg("whitted_spp") = 256,
+          py::arg("patch_sizes") = py::none(), py::arg("threads") = py::none(),
+          py::arg("progress") = py::none(),
+          "The convergence study (`rayo bench convergence`): path at 1, 4, 16, ... spp up to "
+          "max_spp and Whitted + radiosity at patch_sizes, against a path reference of "
+          "reference_spp; one dict per render (method, spp, patch_size, patches, seconds, "
+          "rms_relative, mean_relative, ...). scene None: the built-in Cornell box. With output, "
+          "also its files and chart. Arguments: as the flags, with their bounds; threads None: "
+          "all cores.");
 }

@@ -488,7 +488,17 @@ def test_study_arguments_have_the_clis_bounds_and_messages(tmp_path):
              (rayo.bench_suite, {"threads": 0}, ["suite", "--threads", "0"]),
              (rayo.bench_suite, {"threads": 4097}, ["suite", "--threads", "4097"]),
              (rayo.bench_accuracy, {"size": 15}, ["accuracy", "-o", out, "--size", "15"]),
-             (rayo.bench_accuracy, {"size": 4097}, ["accuracy", "-o", out, "--size", "4097"])]
+             (rayo.bench_accuracy, {"size": 4097}, ["accuracy", "-o", out, "--size", "4097"]),
+             (rayo.bench_convergence, {"width": 7}, ["convergence", "-o", out, "--width", "7"]),
+             (rayo.bench_convergence, {"reference_spp": 0},
+              ["convergence", "-o", out, "--reference-spp", "0"]),
+             (rayo.bench_convergence, {"max_spp": 65537},
+              ["convergence", "-o", out, "--max-spp", "65537"]),
+             (rayo.bench_convergence, {"whitted_spp": 0},
+              ["convergence", "-o", out, "--whitted-spp", "0"]),
+             (rayo.bench_convergence, {"threads": 0}, ["convergence", "-o", out, "--threads", "0"]),
+             (rayo.bench_convergence, {"max_spp": 64, "reference_spp": 64},
+              ["convergence", "-o", out, "--max-spp", "64", "--reference-spp", "64"])]
     for function, keywords, args in cases:
         with pytest.raises(ValueError) as e:
             function(out, **keywords)
@@ -500,9 +510,43 @@ def test_study_arguments_have_the_clis_bounds_and_messages(tmp_path):
     assert not os.path.exists(out)
 
 
+def test_the_convergence_study_returns_its_rows_as_the_cli_measures_them(tmp_path):
+    flags = {"width": 32, "reference_spp": 256, "max_spp": 16, "whitted_spp": 4,
+             "patch_sizes": [240], "threads": 2}
+    rows = rayo.bench_convergence(str(tmp_path / "py"), **flags)
+    assert [(r["method"], r["spp"]) for r in rows] == [("path", 1), ("path", 4), ("path", 16),
+                                                       ("radiosity", 4)]
+    assert all(r["scene"] == "scenes/cornell_box.json (built in)" for r in rows)
+    assert all(r["width"] == 32 and r["height"] == 32 and r["reference_spp"] == 256 for r in rows)
+    path = [r for r in rows if r["method"] == "path"]
+    # Deterministic images: the error at 16 spp is below half that at 1 (0.35 against 1.35).
+    assert path[-1]["rms_relative"] < 0.5 * path[0]["rms_relative"]
+    radiosity = rows[-1]
+    assert radiosity["patch_size"] == 240 and radiosity["patches"] == 206
+    assert radiosity["seconds"] == pytest.approx(radiosity["render_seconds"] +
+                                                 radiosity["solve_seconds"])
+    assert {"convergence.csv", "convergence.json", "convergence.md", "convergence.png",
+            "convergence.svg"} <= set(os.listdir(tmp_path / "py"))
+    # The command line measures the same images: the same errors.
+    r = cli("bench", "convergence", "-o", str(tmp_path / "cli"), "--width", "32",
+            "--reference-spp", "256", "--max-spp", "16", "--whitted-spp", "4",
+            "--patch-sizes", "240", "--threads", "2")
+    assert r.returncode == 0, r.stderr
+    with open(tmp_path / "cli" / "convergence.csv") as f:
+        lines = f.read().splitlines()
+    assert [float(line.split(",")[3]) for line in lines[1:]] == pytest.approx(
+        [row["rms_relative"] for row in rows], rel=1e-6)
+    with pytest.raises(rayo.InputError):
+        rayo.bench_convergence(scene=str(tmp_path / "missing.json"), width=8, reference_spp=2,
+                               max_spp=1)
+    with pytest.raises(rayo.UsageError, match="--patch-sizes: expected numbers > 0"):
+        rayo.bench_convergence(patch_sizes=[60, -1])
+
+
 @pytest.mark.parametrize("study", ["bench_accuracy(out, size=256)",
                                    "bench_accuracy(out, size=512, only='shapes')",
-                                   "bench_suite(out, size=3, width=1024)"])
+                                   "bench_suite(out, size=3, width=1024)",
+                                   "bench_convergence(out, width=1024, reference_spp=64, max_spp=16)"])
 def test_ctrl_c_stops_a_study_raises_keyboard_interrupt_and_writes_no_file(tmp_path, study):
     out = str(tmp_path / "out")
     script = write(tmp_path / "study.py", textwrap.dedent(f"""\
