@@ -110,6 +110,10 @@ class GltfTestWriter {
     }
     // The binary glTF: a JSON chunk and a BIN chunk, each padded to 4 bytes.
     std::string write_glb(const TempDir& dir, const std::string& name) const {
+        return write_glb(dir.file(name));
+    }
+    // The same at `path`.
+    std::string write_glb(const std::string& path) const {
         Json doc = m_doc;
         doc["buffers"] = {{{"byteLength", m_bin.size()}}};
         std::string json = doc.dump();
@@ -125,7 +129,8 @@ class GltfTestWriter {
         u32(static_cast<uint32_t>(m_bin.size()));
         u32(0x004E4942u);  // "BIN\0"
         out.append(reinterpret_cast<const char*>(m_bin.data()), m_bin.size());
-        return dir.write(name, out);
+        std::ofstream(path, std::ios::binary) << out;
+        return path;
     }
 
   private:

@@ -15,41 +15,13 @@
 #include "apps/scene/mesh_loader.h"
 #include "core/error.h"
 #include "shading/image_texture.h"
+#include "tests/scene/header_only_images.h"
 #include "tests/scene/scene_test_files.h"
 
 namespace rayo {
 namespace {
 
-// CRC-32 (ISO 3309, as PNG chunks use it).
-uint32_t crc32(const std::string& bytes) {
-    uint32_t crc = 0xFFFFFFFFu;
-    for (const unsigned char byte : bytes) {
-        crc ^= byte;
-        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-    }
-    return ~crc;
-}
-
-std::string big_endian(uint32_t v) {
-    return {static_cast<char>(v >> 24), static_cast<char>(v >> 16), static_cast<char>(v >> 8),
-            static_cast<char>(v)};
-}
-
-std::string chunk(const std::string& type, const std::string& data) {
-    return big_endian(static_cast<uint32_t>(data.size())) + type + data +
-           big_endian(crc32(type + data));
-}
-
-// A PNG whose valid header declares width × height 8-bit RGB (grey: one channel), with one byte
-// of pixel data.
-std::string png_header_only(uint32_t width, uint32_t height, bool grey = false) {
-    const std::string ihdr = big_endian(width) + big_endian(height) +
-                             std::string(grey ? "\x08\x00\x00\x00\x00" : "\x08\x02\x00\x00\x00", 5);
-    // One IDAT chunk (libpng reads up to the first): a zlib stream of one stored zero byte.
-    const std::string idat("\x78\x01\x01\x01\x00\xfe\xff\x00\x00\x01\x00\x01", 12);
-    return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) + chunk("IDAT", idat) +
-           chunk("IEND", "");
-}
+using rayo_test::png_header_only;
 
 std::string refusal(const rayo_test::TempDir& dir, const std::string& image) {
     const std::string scene = R"({"rayo": 1, "materials": {"default": {"kd": {"image": ")" + image +
