@@ -1,6 +1,7 @@
-# libFuzzer targets: one executable per scene reader, fuzz/<reader>_fuzz.cpp, built with
-# clang's -fsanitize=fuzzer. The loaders (rayo_scene) get coverage instrumentation so libFuzzer can
-# steer; core and shading do not, which keeps the sanitizer test run that shares this build fast.
+# libFuzzer targets: one executable per input reader (the scene and mesh readers, texture images,
+# the resume journal), fuzz/<reader>_fuzz.cpp, built with clang's -fsanitize=fuzzer. The loaders
+# (rayo_scene) get coverage instrumentation so libFuzzer can steer; the rest of core and shading
+# does not, which keeps the sanitizer test run that shares this build fast.
 # Each fuzzer is a ctest entry `fuzz_<reader>` that runs for RAYO_FUZZ_SECONDS over a copy of its
 # seed corpus fuzz/corpus/<reader>/ (cmake/run_fuzzer.cmake); fuzz/run.sh runs them longer.
 if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
@@ -11,6 +12,10 @@ endif()
 set(RAYO_FUZZ_SECONDS 20 CACHE STRING "Seconds each fuzzer runs as a ctest entry")
 
 target_compile_options(rayo_scene PRIVATE -fsanitize=fuzzer-no-link)
+# The input readers that live below the scene layer get it too, file by file: the resume journal
+# (journal_fuzz) and the texture checks before an image is registered (texture_fuzz).
+set_source_files_properties(core/image/partial_render.cpp shading/image_texture.cpp
+                            PROPERTIES COMPILE_OPTIONS -fsanitize=fuzzer-no-link)
 
 file(GLOB RAYO_FUZZ_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/*_fuzz.cpp)
 foreach(src ${RAYO_FUZZ_SOURCES})
@@ -19,7 +24,7 @@ foreach(src ${RAYO_FUZZ_SOURCES})
   add_executable(${name} ${src})
   target_compile_options(${name} PRIVATE -fsanitize=fuzzer)
   target_link_options(${name} PRIVATE -fsanitize=fuzzer)
-  target_link_libraries(${name} PRIVATE rayo_scene)
+  target_link_libraries(${name} PRIVATE rayo_scene rayo_image)
   add_dependencies(${name} rayo_oiio)
   set(dict ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/${reader}.dict)
   if(NOT EXISTS ${dict})

@@ -15,6 +15,15 @@ inline bool within_scene_magnitude(double v) {
     return std::isfinite(v) && std::fabs(v) <= kMaxSceneMagnitude;
 }
 
+// Whether every coordinate of the point `p` (a Vec3) is: each tested, since max_abs_component
+// (glm::max) drops a NaN in y or z (a PLY vertex (0, NaN, 0) was accepted; found by
+// fuzz/mesh_fuzz.cpp).
+template <typename Point>
+inline bool point_within_scene_magnitude(const Point& p) {
+    return within_scene_magnitude(p.x) && within_scene_magnitude(p.y) &&
+           within_scene_magnitude(p.z);
+}
+
 // The rule in words, for the loaders' "expected <rule>, got <value>" messages.
 constexpr const char* kSceneMagnitudeRule =
     "a finite number (in float range) of magnitude <= 1e18, so that its square fits a float";

@@ -66,6 +66,20 @@ inline void check_mesh(const TriangleMesh& mesh, size_t materials, const std::st
     expect(mesh.normals.empty() || mesh.normals.size() == mesh.positions.size(),
            name + ": normal count differs from position count");
     for (const Vec3& n : mesh.normals) expect(finite(n), name + ": non-finite normal");
+    // Vertex colours multiply kd and ka (core/shapes/mesh.h): one per position, finite, >= 0.
+    expect(mesh.colors.empty() || mesh.colors.size() == mesh.positions.size(),
+           name + ": colour count differs from position count");
+    for (const Vec3& c : mesh.colors) {
+        expect(finite(c) && c.x >= 0.0f && c.y >= 0.0f && c.z >= 0.0f,
+               name + ": non-finite or negative vertex colour");
+    }
+    expect(mesh.uvs.empty() || mesh.uvs.size() == mesh.positions.size(),
+           name + ": texture coordinate count differs from position count");
+    for (const glm::vec2& uv : mesh.uvs) {
+        expect(finite(uv.x) && finite(uv.y), name + ": non-finite texture coordinate");
+    }
+    expect(mesh.tangents.empty() || mesh.tangents.size() == mesh.positions.size(),
+           name + ": tangent count differs from position count");
     expect(mesh.materials.size() == mesh.triangles.size(), name + ": material ids per triangle");
     for (const auto& t : mesh.triangles) {
         for (uint32_t i : t) expect(i < mesh.positions.size(), name + ": index past positions");

@@ -75,14 +75,18 @@ std::string with_file_name(std::string message, const std::string& cache,
 
 // Why a PNG's chunks do not reach its IEND within `bytes` (empty when they do, or when the bytes
 // are no PNG): said before the decoder reads past the end, where OpenImageIO's read callback
-// leaks its message as libpng unwinds (LeakSanitizer: PNGInput::PngReadCallback).
-std::string png_truncation(const std::string& bytes) {
+// leaks its message as libpng unwinds (LeakSanitizer: PNGInput::PngReadCallback). With
+// `header_only`, only the chunks libpng reads to open the file, up to the first IDAT's header
+// (what read_header reads: a file cut before it leaked there; found by fuzz/texture_fuzz.cpp).
+std::string png_truncation(const std::string& bytes, bool header_only = false) {
     if (bytes.size() < 8 || std::memcmp(bytes.data(), "\x89PNG\r\n\x1a\n", 8) != 0) return {};
+    const std::string end = header_only ? "its image data (IDAT)" : "its IEND chunk";
     size_t at = 8;
     while (at + 8 <= bytes.size()) {
         const auto byte = [&](size_t i) { return static_cast<uint32_t>(uint8_t(bytes[at + i])); };
         const uint64_t length = (byte(0) << 24) | (byte(1) << 16) | (byte(2) << 8) | byte(3);
         const std::string type = bytes.substr(at + 4, 4);
+        if (header_only && type == "IDAT") return {};  // libpng opens it at its header
         if (at + 12 + length > bytes.size()) {
             return "truncated PNG: chunk " + type + " at byte " + std::to_string(at) + " runs " +
                    "past the end of the file (" + std::to_string(bytes.size()) + " bytes)";
@@ -90,8 +94,48 @@ std::string png_truncation(const std::string& bytes) {
         if (type == "IEND") return {};
         at += 12 + length;
     }
-    return "truncated PNG: the file (" + std::to_string(bytes.size()) +
-           " bytes) ends before its IEND chunk";
+    return "truncated PNG: the file (" + std::to_string(bytes.size()) + " bytes) ends before " +
+           end;
+}
+
+// Why an OpenEXR file's header attributes do not fit within `bytes` (empty when they do, or when
+// the bytes are no OpenEXR file): OpenEXR 3.1 allocates an attribute's declared size before it
+// reads it, so a 545-byte file declaring a 1.7 GB string took 2 GB to read its header (found by
+// fuzz/texture_fuzz.cpp). Walks every header (a multi-part file has several, the last one
+// empty): name, type, a 4-byte size, the value.
+std::string exr_truncation(const std::string& bytes) {
+    if (bytes.size() < 8 || std::memcmp(bytes.data(), "\x76\x2f\x31\x01", 4) != 0) return {};
+    const bool multipart = (uint8_t(bytes[5]) & 0x10) != 0;  // version flags, bit 12
+    size_t at = 8;
+    const auto text = [&](std::string& out) {
+        const size_t end = bytes.find('\0', at);
+        if (end == std::string::npos) return false;
+        out = bytes.substr(at, end - at);
+        at = end + 1;
+        return true;
+    };
+    const std::string ends =
+        "truncated OpenEXR header: the file (" + std::to_string(bytes.size()) + " bytes) ends ";
+    for (bool header_start = true;;) {
+        std::string name, type;
+        if (!text(name)) return ends + "in an attribute's name";
+        if (name.empty()) {
+            if (!multipart || header_start) return {};  // the (last) header's end
+            header_start = true;
+            continue;
+        }
+        header_start = false;
+        if (!text(type) || at + 4 > bytes.size()) return ends + "in attribute '" + name + "'";
+        uint32_t size = 0;
+        std::memcpy(&size, bytes.data() + at, 4);  // little-endian (OpenEXR's byte order)
+        at += 4;
+        if (size > bytes.size() - at) {
+            return "truncated OpenEXR header: attribute '" + name + "' declares " +
+                   std::to_string(size) + " bytes, past the end of the file (" +
+                   std::to_string(bytes.size()) + " bytes)";
+        }
+        at += size;
+    }
 }
 
 }  // namespace
@@ -102,6 +146,9 @@ float srgb_to_linear(float encoded) {
 }
 
 bool image_source_readable(const ImageSource& source, std::string& error) {
+    error = png_truncation(source.bytes, /*header_only=*/true);
+    if (error.empty()) error = exr_truncation(source.bytes);
+    if (!error.empty()) return false;
     ImageHeader header;
     const std::string name = cache_name(source, 0);
     if (!image_library().read_header(name, source.bytes, header, error)) {
@@ -111,6 +158,14 @@ bool image_source_readable(const ImageSource& source, std::string& error) {
         error = error.empty() || !named_format
                     ? "not an image OpenImageIO can read (no reader recognizes its bytes)"
                     : with_file_name(error, name, source);
+        return false;
+    }
+    // An image without pixels (a TGA header may say 0 x 0) passed every size check, and
+    // OpenImageIO's bicubic lookup divided by its size (SIGFPE; found by fuzz/texture_fuzz.cpp).
+    if (header.width < 1 || header.height < 1 || header.depth < 1) {
+        error = "image is " + std::to_string(header.width) + "x" + std::to_string(header.height) +
+                (header.depth != 1 ? "x" + std::to_string(header.depth) : std::string()) +
+                ": it has no pixels";
         return false;
     }
     const uint64_t pixels = uint64_t(std::max(header.width, 0)) *

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <assimp/Importer.hpp>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 #include <string>
@@ -62,6 +64,13 @@ uint64_t min_element_bytes(const std::vector<PlyProperty>& properties, bool asci
     return bytes > 0 ? bytes : 1;  // an element without properties still takes a line
 }
 
+// Whether `token` is one number, whole (strtod reads all of it: "1e-3", "-2", "nan", "inf").
+bool is_number(const std::string& token) {
+    char* end = nullptr;
+    std::strtod(token.c_str(), &end);
+    return !token.empty() && end == token.c_str() + token.size();
+}
+
 std::string ply_instance(const PlyElement& e, uint64_t i) {
     return "PLY element '" + e.name + "' instance " + std::to_string(i);
 }
@@ -114,24 +123,34 @@ void check_binary_ply_body(const std::string& bytes, uint64_t start,
     }
 }
 
-// An ASCII PLY body's list counts, line by line from `first_line`: a count that is not a
-// non-negative integer is refused at its line (assimp took −5 as a count of 2^32 − 5 and ran out
-// of memory). Lines that hold more or less than one instance are left to assimp.
+// An ASCII PLY body, line by line from `first_line`: a list count that is not a non-negative
+// integer is refused at its line (assimp took −5 as a count of 2^32 − 5 and ran out of memory),
+// and so is a value that is not a number (assimp threw on it and leaked the mesh it was building:
+// LeakSanitizer, found by fuzz/mesh_fuzz.cpp). Lines that hold fewer values than one instance,
+// and properties of types PLY does not have, are left to assimp.
 void check_ascii_ply_lists(const std::string& bytes, uint64_t start, size_t first_line,
                            const std::vector<PlyElement>& elements, const std::string& path) {
     std::istringstream body(bytes.substr(start));
     std::string line, token;
     size_t number = first_line;
     for (const PlyElement& e : elements) {
-        const bool has_list = std::any_of(e.properties.begin(), e.properties.end(),
-                                          [](const PlyProperty& p) { return p.list; });
         for (uint64_t i = 0; i < e.count; ++i, ++number) {
             if (!std::getline(body, line)) return;
-            if (!has_list) continue;
             std::istringstream in(line);
+            const auto value = [&](const std::string& type) {
+                if (!(in >> token)) return false;
+                if (ply_scalar_bytes(type) > 0 && !is_number(token)) {
+                    throw InputError(path + ":" + std::to_string(number),
+                                     ply_instance(e, i) + ": '" + token + "' is not a number");
+                }
+                return true;
+            };
             for (const PlyProperty& p : e.properties) {
+                if (!p.list) {
+                    if (!value(p.type)) return;
+                    continue;
+                }
                 if (!(in >> token)) return;
-                if (!p.list) continue;
                 if (token.find_first_not_of("0123456789") != std::string::npos ||
                     token.size() > 9) {
                     throw InputError(path + ":" + std::to_string(number),
@@ -139,7 +158,7 @@ void check_ascii_ply_lists(const std::string& bytes, uint64_t start, size_t firs
                                          "' is not a count (an integer >= 0)");
                 }
                 for (long n = std::stol(token); n > 0; --n) {
-                    if (!(in >> token)) return;
+                    if (!value(p.item_type)) return;
                 }
             }
         }
@@ -148,10 +167,24 @@ void check_ascii_ply_lists(const std::string& bytes, uint64_t start, size_t firs
 
 // A PLY header's element counts against the bytes that follow it: assimp reserves memory for
 // every declared instance before reading one, so "element vertex 2000000000" in a small file
-// would take gigabytes. Headers it cannot parse are left to assimp's own message.
+// would take gigabytes. A header without end_header is refused; other headers it cannot parse are
+// left to assimp's own message.
 void check_ply_header(const std::string& bytes, const std::string& path) {
-    const size_t end = bytes.find("end_header");
-    if (bytes.compare(0, 3, "ply") != 0 || end == std::string::npos) return;
+    if (bytes.compare(0, 3, "ply") != 0) return;
+    // assimp 5.2 read a binary body past a header without its end line (SIGSEGV, also for
+    // "propeend_header"; found by fuzz/mesh_fuzz.cpp).
+    size_t end = bytes.find("\nend_header");
+    if (end != std::string::npos) ++end;
+    if (end == std::string::npos) {
+        throw InputError(path, "PLY header without its end_header line (truncated or corrupt)");
+    }
+    // The body starts on the next line: "end_header\x1a0 0 0" misplaced it here, and assimp took
+    // a list count of -5 read where a vertex was (a hang; found by fuzz/mesh_fuzz.cpp).
+    const size_t after = end + std::strlen("end_header");
+    const size_t line_end = std::min(bytes.find('\n', after), bytes.size());
+    if (bytes.find_first_not_of(" \t\r", after) < line_end) {
+        throw InputError(path, "PLY header: end_header must end its line");
+    }
     const size_t body_start = bytes.find('\n', end);
     const uint64_t body = body_start == std::string::npos ? 0 : bytes.size() - body_start - 1;
     std::istringstream header(bytes.substr(0, end));
@@ -164,12 +197,47 @@ void check_ply_header(const std::string& bytes, const std::string& path) {
         std::istringstream in(line);
         std::string keyword;
         in >> keyword;
+        // The header's words (the PLY format); assimp aborted on a line of another ("proper
+        // alphaar red", "elrty ...": SIGABRT; found by fuzz/mesh_fuzz.cpp).
+        if (number > 1 && keyword != "format" && keyword != "comment" && keyword != "obj_info" &&
+            keyword != "element" && keyword != "property" && !keyword.empty()) {
+            throw InputError(path + ":" + std::to_string(number),
+                             "PLY header line starts with '" + keyword +
+                                 "': expected format, comment, obj_info, element, property or "
+                                 "end_header");
+        }
+        // Each element and property line holds its words and no more: assimp reads the header as
+        // words, not lines ("property uchar blueAelement face 5" declared an element to it: a
+        // 2 GB reservation; found by fuzz/mesh_fuzz.cpp).
+        size_t words = 0;
+        std::istringstream count_in(line);
+        for (std::string word; count_in >> word;) ++words;
+        const bool list = line.find(" list ") != std::string::npos;
+        if ((keyword == "element" && words != 3) ||
+            (keyword == "property" && words != (list ? 5u : 3u)) ||
+            (keyword == "format" && words != 3)) {
+            throw InputError(path + ":" + std::to_string(number),
+                             "PLY header: expected " +
+                                 std::string(keyword == "element"  ? "element NAME COUNT"
+                                             : keyword == "format" ? "format TYPE VERSION"
+                                             : list                ? "property list COUNT_TYPE "
+                                                                     "ITEM_TYPE NAME"
+                                                                   : "property TYPE NAME") +
+                                 ", got '" + line + "'");
+        }
         if (keyword == "format") {
             in >> format;
         } else if (keyword == "element") {
             PlyElement e;
             std::string count;
             in >> e.name >> count;
+            // A name is a word: assimp read "2147483648face 2" as that many instances (a 48 GB
+            // reservation; found by fuzz/mesh_fuzz.cpp).
+            if (e.name.empty() ||
+                !(std::isalpha(static_cast<unsigned char>(e.name[0])) || e.name[0] == '_')) {
+                throw InputError(path + ":" + std::to_string(number),
+                                 "PLY element name '" + e.name + "': expected a word");
+            }
             if (count.empty() || count.find_first_not_of("0123456789") != std::string::npos ||
                 count.size() > 18) {
                 throw InputError(
@@ -186,8 +254,24 @@ void check_ply_header(const std::string& bytes, const std::string& path) {
                 property.list = true;
                 in >> property.type >> property.item_type;  // the count's type, the items'
             }
+            // A type PLY does not have: assimp read on with a size of its own (a 32 GB list;
+            // found by fuzz/mesh_fuzz.cpp).
+            std::vector<std::string> types{property.type};
+            if (property.list) types.push_back(property.item_type);
+            for (const std::string& type : types) {
+                if (ply_scalar_bytes(type) > 0) continue;
+                throw InputError(path + ":" + std::to_string(number),
+                                 "PLY property type '" + type +
+                                     "' is not a PLY type (char, uchar, short, ushort, int, uint, "
+                                     "float, double, or int8 ... float64)");
+            }
             elements.back().properties.push_back(property);
         }
+    }
+    // A format assimp does not know it read as binary (a 32 GB list; found by fuzz/mesh_fuzz.cpp).
+    if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian") {
+        throw InputError(path, "PLY format '" + format +
+                                   "': expected ascii, binary_little_endian or binary_big_endian");
     }
     const bool ascii = format == "ascii";
     uint64_t needed = 0;
@@ -209,7 +293,8 @@ void check_ply_header(const std::string& bytes, const std::string& path) {
     }
 }
 
-// Every face's vertex indices within its mesh, as read (assimp's importers do not all check);
+// Every face's vertex indices within its mesh, as read (assimp's importers do not all check), and
+// every face with one at least;
 // returns whether a face has three corners or more (post-processing drops points and lines).
 bool check_face_indices(const aiScene& scene, const std::string& path) {
     bool any_polygon = false;
@@ -218,6 +303,11 @@ bool check_face_indices(const aiScene& scene, const std::string& path) {
         for (unsigned int f = 0; f < mesh.mNumFaces; ++f) {
             const aiFace& face = mesh.mFaces[f];
             any_polygon |= face.mNumIndices >= 3;
+            // A PLY list count of 0: assimp's post-processing asserts on such a face (SIGABRT;
+            // found by fuzz/mesh_fuzz.cpp).
+            if (face.mNumIndices == 0) {
+                throw InputError(path, "face " + std::to_string(f) + " has no vertices");
+            }
             if (face.mNumIndices > kMaxPolygonVertices) {
                 throw InputError(path, "face " + std::to_string(f) + ": " +
                                            polygon_vertex_limit_text(face.mNumIndices));
@@ -235,22 +325,81 @@ bool check_face_indices(const aiScene& scene, const std::string& path) {
     return any_polygon;
 }
 
+// An ASCII STL's facets, checked before assimp reads them: assimp 5.2 throws on a coordinate that
+// is not a number, a vertex or normal cut short, or a solid whose vertices do not match its facet
+// normals three to one, and leaks the mesh it was building each time (LeakSanitizer; found by
+// fuzz/mesh_fuzz.cpp). Refused at `path:line`, as the other formats' errors are. As assimp reads
+// them: a facet's vertices past its third are skipped, a normal counts (for three vertices) only
+// right after "facet", a solid's name is the rest of its line, and the text ends at a NUL byte
+// (assimp reads it as a C string).
+void check_ascii_stl(const std::string& bytes, const std::string& path) {
+    std::istringstream in(bytes.substr(0, bytes.find('\0')));
+    std::string line, token, previous;
+    size_t number = 0, solid_line = 0;
+    bool in_solid = false;
+    uint64_t positions = 0, normals = 0, facet_vertices = 3;  // vertices outside a facet: skipped
+    const auto end_solid = [&] {
+        if (in_solid && (positions == 0 || positions != normals)) {
+            throw InputError(path + ":" + std::to_string(solid_line),
+                             "STL solid without whole facets (" + std::to_string(positions) +
+                                 " vertices for " + std::to_string(normals / 3) +
+                                 " facet normals; each facet has a normal and 3 vertices)");
+        }
+        in_solid = false;
+        positions = normals = 0;
+    };
+    while (std::getline(in, line)) {
+        ++number;
+        std::istringstream words(line);
+        previous.clear();
+        for (bool first = true; words >> token; first = false, previous = token) {
+            if (first && token.compare(0, 5, "solid") == 0) {
+                end_solid();
+                in_solid = true;
+                solid_line = number;
+                break;
+            }
+            if (token == "endsolid") {
+                end_solid();
+                break;
+            }
+            if (token == "facet") facet_vertices = 0;
+            const bool vertex = token == "vertex";
+            if ((!vertex && token != "normal") || (vertex && facet_vertices >= 3)) continue;
+            for (int k = 0; k < 3; ++k) {
+                std::string value;
+                if (!(words >> value) || !is_number(value)) {
+                    throw InputError(path + ":" + std::to_string(number),
+                                     "STL " + token + ": expected 3 numbers, got '" + value + "'");
+                }
+            }
+            if (vertex) {
+                ++facet_vertices;
+                ++positions;
+            } else if (previous == "facet") {
+                normals += 3;
+            }
+        }
+    }
+    end_solid();
+}
+
 // A binary STL's triangle count against its size (80-byte header, the count, 50 bytes per
 // triangle), checked before assimp reads it: assimp takes a count the file cannot hold for an
 // ASCII file and fails with a message about its own temporary name. A file that starts with
-// "solid" and is not exactly the size of a binary one is ASCII, left to assimp.
+// "solid" and is not exactly the size of a binary one is ASCII (check_ascii_stl).
 void check_stl_file(const std::string& bytes, const std::string& path) {
     constexpr uint64_t kHeader = 84, kTriangle = 50;
     const bool says_solid = bytes.compare(0, 5, "solid") == 0;
     if (bytes.size() < kHeader) {
-        if (says_solid) return;
+        if (says_solid) return check_ascii_stl(bytes, path);
         throw InputError(path, "binary STL shorter than its 84-byte header (" +
                                    std::to_string(bytes.size()) + " bytes)");
     }
     uint32_t count = 0;
     std::memcpy(&count, bytes.data() + 80, sizeof count);
     const uint64_t expected = kHeader + kTriangle * count;
-    if (says_solid && bytes.size() != expected) return;
+    if (says_solid && bytes.size() != expected) return check_ascii_stl(bytes, path);
     if (bytes.size() < expected) {
         throw InputError(path, "binary STL declares " + std::to_string(count) +
                                    " triangles, which take " + std::to_string(expected) +
@@ -258,10 +407,10 @@ void check_stl_file(const std::string& bytes, const std::string& path) {
     }
 }
 
-// A plain "OFF" file's counts and face indices, checked before assimp reads it: assimp reserves
+// An OFF file's counts and face indices, checked before assimp reads it: assimp reserves
 // the declared vertex count before reading (2^31 vertices in a small file: bad_alloc) and clamps
 // an out-of-range face index to the last vertex (a silently different mesh). Refused at
-// `path:line`, as PLY's are. Other OFF variants (COFF, NOFF, ...) are left to assimp.
+// `path:line`, as PLY's are.
 void check_off_file(const std::string& bytes, const std::string& path) {
     std::istringstream in(bytes);
     std::string line;
@@ -283,15 +432,36 @@ void check_off_file(const std::string& bytes, const std::string& path) {
     if (!next(fields)) return;
     std::string keyword;
     fields >> keyword;
-    if (keyword != "OFF") return;
-    long long vertices = -1, faces = -1;
-    if (!(fields >> vertices)) {
+    // OFF and its variants with colours, normals, texture coordinates or 4-D vertices (COFF,
+    // NOFF, STOFF, 4OFF, ...: more numbers on a vertex's line): assimp died on a COFF face cut
+    // short (SIGSEGV; found by fuzz/mesh_fuzz.cpp). nOFF (a dimension line first) is left to it.
+    // assimp reads the counts right after "OFF", in the same word too ("OFF1167483648": a
+    // 2 GB reservation; found by fuzz/mesh_fuzz.cpp).
+    const size_t off = keyword.find("OFF");
+    if (off == std::string::npos || keyword.find_first_not_of("STCN4") < off) return;
+    std::string rest;
+    std::getline(fields, rest);
+    fields.clear();
+    fields.str(keyword.substr(off + 3) + " " + rest);
+    // The counts as words of digits: one past the range of long long failed to parse and was
+    // left to assimp, which wrapped it (a 45 GB reservation; found by fuzz/mesh_fuzz.cpp).
+    std::string vertex_count, face_count;
+    if (!(fields >> vertex_count)) {
         if (!next(fields)) return;
-        fields >> vertices;
+        fields >> vertex_count;
     }
-    fields >> faces;
+    fields >> face_count;
     const auto where = [&] { return path + ":" + std::to_string(number); };
-    if (vertices < 0 || faces < 0) throw InputError(where(), "expected the vertex and face counts");
+    long long vertices = -1, faces = -1;
+    for (auto [text, value] :
+         {std::pair{&vertex_count, &vertices}, std::pair{&face_count, &faces}}) {
+        if (text->empty() || text->size() > 18 ||
+            text->find_first_not_of("0123456789") != std::string::npos) {
+            throw InputError(where(), "expected the vertex and face counts, got '" + vertex_count +
+                                          " " + face_count + "'");
+        }
+        *value = std::stoll(*text);
+    }
     // Each vertex and face takes a line of at least 6 bytes ("0 0 0\n", "3 0 1 2" less one).
     if (static_cast<unsigned long long>(vertices) + static_cast<unsigned long long>(faces) >
         bytes.size() / 6) {
@@ -299,16 +469,34 @@ void check_off_file(const std::string& bytes, const std::string& path) {
                                       std::to_string(faces) + " faces, more than the file's " +
                                       std::to_string(bytes.size()) + " bytes can hold");
     }
+    // Vertices of three numbers and faces of as many indices as they count: assimp read on past
+    // a face line cut short ("3t ...": SIGSEGV; found by fuzz/mesh_fuzz.cpp).
     for (long long v = 0; v < vertices; ++v) {
         if (!next(fields)) return;  // short files: assimp's message
+        // Whole numbers: assimp read "1-5" or "1FF" otherwise than this walk would (SIGSEGV).
+        std::string x, y, z;
+        if (!(fields >> x >> y >> z) || !is_number(x) || !is_number(y) || !is_number(z)) {
+            throw InputError(where(), "vertex " + std::to_string(v) + ": expected 3 coordinates");
+        }
     }
     for (long long f = 0; f < faces; ++f) {
         if (!next(fields)) return;
         long long corners = 0;
-        fields >> corners;
+        std::string word;
+        if (!(fields >> word) || word.size() > 9 ||
+            word.find_first_not_of("0123456789") != std::string::npos ||
+            (corners = std::stoll(word)) < 1) {
+            throw InputError(
+                where(), "face " + std::to_string(f) + ": expected its vertex count (1 or more)");
+        }
         for (long long c = 0; c < corners; ++c) {
             long long index = 0;
-            if (!(fields >> index)) break;
+            if (!(fields >> word) || word.size() > 18 || word == "-" ||
+                word.find_first_not_of("0123456789", word[0] == '-' ? 1 : 0) != std::string::npos) {
+                throw InputError(where(), "face " + std::to_string(f) + ": expected " +
+                                              std::to_string(corners) + " vertex indices");
+            }
+            index = std::stoll(word);
             if (index < 0 || index >= vertices) {
                 throw InputError(where(), "face " + std::to_string(f) + ": vertex index " +
                                               std::to_string(index) +
@@ -381,7 +569,7 @@ TriangleMesh load_assimp_mesh(const std::string& path, std::vector<Material>& ma
         const auto offset = static_cast<uint32_t>(mesh.positions.size());
         for (unsigned int v = 0; v < in.mNumVertices; ++v) {
             const Vec3 p(in.mVertices[v].x, in.mVertices[v].y, in.mVertices[v].z);
-            if (!within_scene_magnitude(max_abs_component(p))) {
+            if (!point_within_scene_magnitude(p)) {
                 throw InputError(path, "vertex " + std::to_string(offset + v) +
                                            ": coordinates must be " + kSceneMagnitudeRule);
             }

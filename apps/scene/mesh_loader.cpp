@@ -907,7 +907,7 @@ struct GltfBuilder {
         // The rule every other mesh reader applies (a vertex at 3e38 was dropped with its
         // triangles and the file called "no (non-degenerate) triangles").
         for (size_t v = 0; v < piece.positions.size(); ++v) {
-            if (!within_scene_magnitude(max_abs_component(piece.positions[v]))) {
+            if (!point_within_scene_magnitude(piece.positions[v])) {
                 throw InputError(path, what + " POSITION " + std::to_string(v) +
                                            ": coordinates must be " + kSceneMagnitudeRule);
             }
@@ -1546,7 +1546,7 @@ ImportedMesh import_mesh_file(const std::string& path, std::vector<Material>& ma
     transform_mesh(mesh, options.transform);
     if (!options.transform_where.empty()) {
         for (const Vec3& p : mesh.positions) {
-            if (!within_scene_magnitude(max_abs_component(p))) {
+            if (!point_within_scene_magnitude(p)) {
                 throw InputError(options.transform_where,
                                  std::string("the transformed mesh does not fit in floats: every "
                                              "coordinate must be ") +

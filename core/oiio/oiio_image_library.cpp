@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -222,8 +223,31 @@ class OiioImageLibrary : public ImageLibrary {
         return std::make_unique<OiioReader>(std::move(input), std::move(memory));
     }
 
+    // A reader's exception (OpenImageIO's GIF reader resizes a vector to what a header declares:
+    // std::length_error; found by fuzz/texture_fuzz.cpp) is its error, as the interface says.
     bool read_header(const std::string& name, const std::string& bytes, ImageHeader& header,
                      std::string& error) const override {
+        try {
+            return read_header_or_throw(name, bytes, header, error);
+        } catch (const std::exception& e) {
+            error = std::string("the image's reader failed: ") + e.what();
+            return false;
+        }
+    }
+
+    bool decodes(const std::string& name, const std::string& bytes,
+                 std::string& error) const override {
+        try {
+            return decodes_or_throw(name, bytes, error);
+        } catch (const std::exception& e) {
+            error = std::string("the image's reader failed: ") + e.what();
+            return false;
+        }
+    }
+
+  private:
+    static bool read_header_or_throw(const std::string& name, const std::string& bytes,
+                                     ImageHeader& header, std::string& error) {
         OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
         std::unique_ptr<OIIO::ImageInput> input = open_memory(name, memory, error);
         if (!input) return false;
@@ -239,8 +263,8 @@ class OiioImageLibrary : public ImageLibrary {
         return true;
     }
 
-    bool decodes(const std::string& name, const std::string& bytes,
-                 std::string& error) const override {
+    static bool decodes_or_throw(const std::string& name, const std::string& bytes,
+                                 std::string& error) {
         OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
         std::unique_ptr<OIIO::ImageInput> input = open_memory(name, memory, error);
         if (!input) return false;
@@ -272,6 +296,7 @@ class OiioImageLibrary : public ImageLibrary {
         return false;
     }
 
+  public:
     std::unique_ptr<TextureCache> create_texture_cache(float max_memory_mb,
                                                        int autotile) const override {
         return std::make_unique<OiioTextureCache>(max_memory_mb, autotile);
