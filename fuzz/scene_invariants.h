@@ -47,6 +47,9 @@ struct DeclaredBounds {
         if (v < min || v > max) broken = info.name;
     }
     void real(const SettingInfo& info, float v, double min, double max) {
+        // 0 under a positive range is a setting that is off until given (time_limit,
+        // noise_target: the help's "default off"); a reader never gives it.
+        if (v == 0.0f && min > 0.0) return;
         if (!std::isfinite(v) || v < min || v > max) broken = info.name;
     }
     void toggle(const SettingInfo&, bool) {}
