@@ -32,6 +32,7 @@ struct PlyProperty {
     std::string type;
     bool list = false;
     std::string item_type;
+    std::string name;
 };
 
 struct PlyElement {
@@ -254,6 +255,7 @@ void check_ply_header(const std::string& bytes, const std::string& path) {
                 property.list = true;
                 in >> property.type >> property.item_type;  // the count's type, the items'
             }
+            in >> property.name;
             // A type PLY does not have: assimp read on with a size of its own (a 32 GB list;
             // found by fuzz/mesh_fuzz.cpp).
             std::vector<std::string> types{property.type};
@@ -272,6 +274,20 @@ void check_ply_header(const std::string& bytes, const std::string& path) {
     if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian") {
         throw InputError(path, "PLY format '" + format +
                                    "': expected ascii, binary_little_endian or binary_big_endian");
+    }
+    // assimp takes positions from an element named "vertex" only; without one (a misspelt name,
+    // "vertccccex", found by fuzz/mesh_fuzz.cpp) it reserved gigabytes and failed with
+    // std::bad_alloc, a message that says nothing of the file.
+    const auto vertex = std::find_if(elements.begin(), elements.end(),
+                                     [](const PlyElement& e) { return e.name == "vertex"; });
+    const auto has = [&](const char* name) {
+        return std::any_of(vertex->properties.begin(), vertex->properties.end(),
+                           [&](const PlyProperty& p) { return !p.list && p.name == name; });
+    };
+    if (vertex == elements.end() || !has("x") || !has("y") || !has("z")) {
+        throw InputError(path,
+                         "PLY header: no element 'vertex' with properties x, y and z (the "
+                         "positions a mesh needs)");
     }
     const bool ascii = format == "ascii";
     uint64_t needed = 0;

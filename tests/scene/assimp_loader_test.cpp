@@ -301,6 +301,24 @@ TEST_F(AssimpLoader, PlyHeaderWithoutItsEndRefused) {
               "PLY header: end_header must end its line");
 }
 
+// assimp reads positions from an element named "vertex" only: a misspelt name (found by
+// fuzz/mesh_fuzz.cpp, binary) ended in std::bad_alloc after a reservation of gigabytes.
+TEST_F(AssimpLoader, PlyWithoutAVertexElementOfPositionsRefused) {
+    const std::string expected =
+        "PLY header: no element 'vertex' with properties x, y and z (the positions a mesh needs)";
+    std::string misspelt = kPlyHeader + kPlyVertices + "4 0 1 2 3\n";
+    misspelt.replace(misspelt.find("element vertex"), 14, "element vertccccex");
+    EXPECT_EQ(error_of(write("misspelt.ply", misspelt)).message(), expected);
+    std::string no_z = kPlyHeader + kPlyVertices + "4 0 1 2 3\n";
+    no_z.replace(no_z.find("property float z"), 16, "property float w");
+    EXPECT_EQ(error_of(write("no_z.ply", no_z)).message(), expected);
+    const std::string binary =
+        "ply\nformat binary_little_endian 1.0\nelement blueex 1\nproperty float x\n"
+        "property float y\nproperty float z\nend_header\n" +
+        std::string(12, '\0');
+    EXPECT_EQ(error_of(write("binary.ply", binary)).message(), expected);
+}
+
 // A face whose list count is 0 reached assimp's post-processing, which asserted (SIGABRT; found
 // by fuzz/mesh_fuzz.cpp).
 TEST_F(AssimpLoader, FaceWithoutVerticesRefused) {
