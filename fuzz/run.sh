@@ -26,7 +26,7 @@ cmake --build --preset asan -j "${RAYO_JOBS:-2}" --target "${targets[@]}"
 # makes one per input) is freed with a mismatched sized delete and leaks an aligned block inside
 # OIIO, which scripts/lsan.supp suppresses.
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1:new_delete_type_mismatch=0}"
-export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$root/scripts/lsan.supp}"
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$root/scripts/lsan.supp:print_suppressions=0}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 # One reader: its fuzzer for SECONDS; the log goes to build-asan/fuzz-long/<reader>/log.
 fuzz_one() {
