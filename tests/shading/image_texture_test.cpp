@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/image_library.h"
 #include "shading/material.h"
 
 namespace rayo {
@@ -212,7 +213,9 @@ TEST(ImageTexture, AnExrAttributeRunningPastTheFileIsUnreadable) {
 
 // A 414-byte GIF (fuzz/texture_fuzz.cpp's find, tests/data/bad/gif_reader_throws.gif) whose
 // header made OpenImageIO's GIF reader throw std::length_error out of read_header: the image
-// module turns a reader's exception into its error, as its interface promises.
+// module turns a reader's exception into its error, as its interface promises. (Its screen,
+// 35074 x 20048, is above the pixel limit, so the render's check refuses it before the reader
+// sees it; the module is asked directly.)
 TEST(ImageTexture, AReaderThatThrowsReportsAnError) {
     std::ifstream in(std::string(RAYO_TEST_DATA_DIR) + "/bad/gif_reader_throws.gif",
                      std::ios::binary);
@@ -221,8 +224,28 @@ TEST(ImageTexture, AReaderThatThrowsReportsAnError) {
     gif.bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     ASSERT_EQ(gif.bytes.size(), 414u);
     std::string error;
-    EXPECT_FALSE(image_source_readable(gif, error));
+    ImageHeader header;
+    EXPECT_FALSE(image_library().read_header(gif.name, gif.bytes, header, error));
     EXPECT_NE(error.find("the image's reader failed: "), std::string::npos) << error;
+    EXPECT_FALSE(image_source_readable(gif, error));
+    EXPECT_NE(error.find("(a GIF's screen); the limit is"), std::string::npos) << error;
+}
+
+// A 115-byte GIF whose logical screen is 19976 × 21573 (fuzz/texture_fuzz.cpp's find, an hour-long
+// run): OpenImageIO's GIF reader allocated the screen as RGBA when it opened the file, 1.8 GB,
+// before it found the first block wrong. Refused from the screen's size before it is opened; a
+// screen within the limit is left to the reader.
+TEST(ImageTexture, AGifScreenAboveThePixelLimitIsRefusedBeforeItIsOpened) {
+    ImageSource gif;
+    gif.name = "screen.gif";
+    gif.bytes = std::string("GIF89a\x08\x4e\x45\x54\x80\0\0", 13) + std::string(102, '\0');
+    std::string error;
+    EXPECT_FALSE(image_source_readable(gif, error));
+    EXPECT_EQ(error, "image is 19976x21573 (a GIF's screen); the limit is " +
+                         std::to_string(kMaxTexturePixels) + " pixels");
+    gif.bytes[7] = 0x01;  // 264 x 21573: within the limit, the reader's business
+    image_source_readable(gif, error);
+    EXPECT_EQ(error.find("a GIF's screen"), std::string::npos) << error;
 }
 
 // A Targa header saying 0 × 0 (18 bytes, no pixels) passed the pixel-count and cache checks, and
