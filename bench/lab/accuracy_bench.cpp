@@ -13,6 +13,7 @@
 #include "apps/scene/sphere_method_choice.h"
 #include "apps/scene/sphereflake.h"
 #include "bench/lab/sphere_stability.h"
+#include "bench/lab/study_files.h"
 #include "bench/lab/study_stop.h"
 #include "core/accel.h"
 #include "core/error.h"
@@ -104,10 +105,6 @@ SceneDescription close_sphere_scene(int size) {
     d.shading.lights.push_back(light);
     d.shading.background = Vec3(0.3f, 0.4f, 0.6f);
     return d;
-}
-
-std::string csv_field(const std::string& s) {
-    return s.find_first_of(",\"") == std::string::npos ? s : "\"" + s + "\"";
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "apps/scene/renderer.h"
 #include "apps/scene/scene_loader.h"
 #include "bench/lab/convergence_scene.h"
+#include "bench/lab/study_files.h"
 #include "bench/lab/study_stop.h"
 #include "core/error.h"
 #include "core/luminance.h"
@@ -21,31 +22,6 @@ namespace rayo {
 namespace {
 
 constexpr const char* kStudy = "convergence study";
-
-void create_dir(const std::string& dir) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw InputError(dir, "cannot create the output directory: " + ec.message());
-}
-
-void write_file(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) throw InputError(path, "cannot write");
-}
-
-std::string json_string(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        if (static_cast<unsigned char>(c) >= 0x20) out += c;
-    }
-    return out + "\"";
-}
-
-std::string csv_field(const std::string& s) {
-    return s.find_first_of(",\"") == std::string::npos ? s : "\"" + s + "\"";
-}
 
 // The scene with the study's image size: the width asked for, the height in the scene's aspect.
 SceneDescription load_study_scene(const ConvergenceOptions& options) {
@@ -246,7 +222,7 @@ void print_convergence_table(std::ostream& out, const ConvergenceStudy& study, b
 }
 
 void write_convergence_files(const ConvergenceOptions& options, const ConvergenceStudy& study) {
-    create_dir(options.dir);
+    create_output_dir(options.dir);
     const std::string dir = options.dir;
     std::ostringstream csv, json, md, gp;
     // The first five columns are those of the study's earlier script (bench/convergence_study.sh).
@@ -325,11 +301,11 @@ void write_convergence_files(const ConvergenceOptions& options, const Convergenc
     gp << "\nset terminal svg size 700,500\nset output '" << dir
        << "/convergence.svg'\nreplot\nunset output\n";
 
-    write_file(csv_path, csv.str());
-    write_file(dir + "/convergence.json", json.str());
-    write_file(dir + "/convergence.md", md.str());
+    write_text_file(csv_path, csv.str());
+    write_text_file(dir + "/convergence.json", json.str());
+    write_text_file(dir + "/convergence.md", md.str());
     const std::string script = dir + "/convergence.gp";
-    write_file(script, gp.str());
+    write_text_file(script, gp.str());
     const std::string gnuplot = "gnuplot '" + script + "' 2>&1";
     if (std::system(gnuplot.c_str()) != 0) {
         throw InputError(script, "gnuplot failed (is gnuplot-nox installed? scripts/setup.sh)");

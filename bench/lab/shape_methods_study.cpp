@@ -12,6 +12,7 @@
 #include <ostream>
 
 #include "apps/scene/shape_method_choice.h"
+#include "bench/lab/study_files.h"
 #include "bench/lab/study_stop.h"
 #include "core/accel.h"
 #include "core/error.h"
@@ -100,10 +101,6 @@ Trace time_rays(const Accel& accel, const std::vector<Ray>& rays, int repeats, d
         ns_single += 1e9 * best_single[c] / n;
     }
     return trace;
-}
-
-std::string csv_field(const std::string& s) {
-    return s.find_first_of(",\"") == std::string::npos ? s : "\"" + s + "\"";
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "apps/scene/renderer.h"
 #include "bench/lab/spd_povray.h"
 #include "bench/lab/spd_scenes.h"
+#include "bench/lab/study_files.h"
 #include "bench/lab/study_stop.h"
 #include "core/error.h"
 
@@ -28,36 +29,11 @@ std::vector<std::string> suite_scenes(const SuiteOptions& options) {
     return options.only.empty() ? spd_scene_names() : options.only;
 }
 
-void create_dir(const std::string& dir) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec) throw InputError(dir, "cannot create the output directory: " + ec.message());
-}
-
-void write_file(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    if (!out) throw InputError(path, "cannot write");
-}
-
-std::string json_string(const std::string& s) {
-    std::string out = "\"";
-    for (char c : s) {
-        if (c == '"' || c == '\\') out += '\\';
-        if (static_cast<unsigned char>(c) >= 0x20) out += c;
-    }
-    return out + "\"";
-}
-
-std::string csv_field(const std::string& s) {
-    return s.find_first_of(",\"") == std::string::npos ? s : "\"" + s + "\"";
-}
-
 // POV-Ray's whole run on the scene's translation, in seconds (the shell command's wall time).
 double time_povray(const std::string& dir, const std::string& name, const std::string& nff,
                    const SuiteOptions& options) {
     const std::string pov = dir + "/" + name + ".pov";
-    write_file(pov, nff_to_povray(nff, options.width));
+    write_text_file(pov, nff_to_povray(nff, options.width));
     std::ostringstream command;
     // POV-Ray writes only below the current folder or /tmp (Debian's povray.conf): run it in DIR.
     command << "cd '" << dir << "' && povray +I" << name << ".pov +O" << name << ".pov.png +W"
@@ -129,7 +105,7 @@ std::vector<SuiteRow> run_spd_suite(const SuiteOptions& options, std::ostream& p
                       .string();
         temporary.reset(new std::string(pov_dir));
     }
-    if (options.povray) create_dir(pov_dir);
+    if (options.povray) create_output_dir(pov_dir);
     std::vector<SuiteRow> rows;
     for (const std::string& name : names) {
         SuiteRow row;
@@ -228,7 +204,7 @@ void print_suite_table(std::ostream& out, const std::vector<SuiteRow>& rows,
 
 void write_suite_files(const SuiteOptions& options, const std::vector<SuiteRow>& rows,
                        const MachineInfo& machine) {
-    create_dir(options.dir);
+    create_output_dir(options.dir);
     const std::string dir = options.dir;
     std::ostringstream csv, json, md, gp;
     csv << "scene,size,width,primitives,rays_camera,rays_shadow,rays_shadow_filtered,"
@@ -286,11 +262,11 @@ void write_suite_files(const SuiteOptions& options, const std::vector<SuiteRow>&
        << "'' skip 1 using 13 title 'render', "
        << (pov ? "'' skip 1 using 20 title 'POV-Ray (whole run)', " : "")
        << "'' skip 1 using 0:15 axes x1y2 with linespoints pt 7 lw 2 title 'Mrays/s'\n";
-    write_file(csv_path, csv.str());
-    write_file(dir + "/suite.json", json.str());
-    write_file(dir + "/suite.md", md.str());
+    write_text_file(csv_path, csv.str());
+    write_text_file(dir + "/suite.json", json.str());
+    write_text_file(dir + "/suite.md", md.str());
     const std::string script = dir + "/suite.gp";
-    write_file(script, gp.str());
+    write_text_file(script, gp.str());
     const std::string command = "gnuplot '" + script + "' 2>&1";
     if (std::system(command.c_str()) != 0) {
         throw InputError(script, "gnuplot failed (is gnuplot-nox installed? scripts/setup.sh)");
@@ -298,11 +274,11 @@ void write_suite_files(const SuiteOptions& options, const std::vector<SuiteRow>&
 }
 
 void write_spd_nff_files(const SuiteOptions& options, std::ostream& progress) {
-    create_dir(options.dir);
+    create_output_dir(options.dir);
     for (const std::string& name : suite_scenes(options)) {
         const std::string path =
             options.dir + "/" + name + "_" + std::to_string(options.size) + ".nff";
-        write_file(path, spd_nff(name, options.size));
+        write_text_file(path, spd_nff(name, options.size));
         progress << "wrote " << path << "\n";
     }
 }
