@@ -9,6 +9,10 @@
 
 namespace rayo {
 
+// The largest progressive render: 2^26 pixels (8192²), whose passes' sums take 2 GiB at 32 bytes
+// a pixel (PassAccumulator).
+constexpr long long kMaxProgressivePixels = 1LL << 26;
+
 // Off unless a time limit or a noise target is set.
 struct ProgressiveSettings {
     float time_limit = 0.0f;    // seconds; 0: none

@@ -228,8 +228,15 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
             "a progressive render (time_limit, noise_target) runs in one process and renders "
             "every tile");
     }
-    if (progressive.enabled()) {
-        check_film_size(camera.width(), camera.height(), description.source + "#/render");
+    if (progressive.enabled() &&
+        int64_t(camera.width()) * camera.height() > kMaxProgressivePixels) {
+        // The passes' sums take 32 bytes a pixel (core/progressive.h).
+        throw InputError(description.source + "#/render",
+                         std::to_string(camera.width()) + "x" + std::to_string(camera.height()) +
+                             " is too large for a progressive render (time_limit, noise_target): "
+                             "at most " +
+                             std::to_string(kMaxProgressivePixels) +
+                             " pixels, whose passes take 2 GiB; render a fixed spp");
     }
     if (images) {
         // The texture filter's footprint: a pixel over the samples' stratification.

@@ -60,6 +60,8 @@ TEST_F(ProgressiveCli, BadValuesAndCombinationsAreRefusedBeforeAnyWork) {
         {"--time-limit 1 --max-spp 2", "is below one pass"},
         {"--max-spp 1", "--max-spp"},
         {"--noise-target 0.1 --resume", "a progressive render"},
+        {"--noise-target 0.1 --width 8193 --height 8192",
+         "is too large for a progressive render (time_limit, noise_target): at most 67108864"},
     };
     for (const Case& c : cases) {
         const CommandResult r = run("render scene.json -o out.exr " + c.args);
