@@ -243,6 +243,9 @@ TEST(ImageTexture, AGifScreenAboveThePixelLimitIsRefusedBeforeItIsOpened) {
     EXPECT_FALSE(image_source_readable(gif, error));
     EXPECT_EQ(error, "image is 19976x21573 (a GIF's screen); the limit is " +
                          std::to_string(kMaxTexturePixels) + " pixels");
+    gif.bytes[4] = '3';  // "GIF83a": giflib reads the version's digits as anything
+    EXPECT_FALSE(image_source_readable(gif, error));
+    EXPECT_NE(error.find("(a GIF's screen)"), std::string::npos) << error;
     gif.bytes[7] = 0x01;  // 264 x 21573: within the limit, the reader's business
     image_source_readable(gif, error);
     EXPECT_EQ(error.find("a GIF's screen"), std::string::npos) << error;
