@@ -194,31 +194,11 @@ void print_convergence_table(std::ostream& out, const ConvergenceStudy& study, b
                          radiosity ? fixed(r.solve_seconds, 3) : "-", fixed(r.seconds, 3),
                          fixed(r.rms_relative, 4), fixed(r.mean_relative, 4)});
     }
-    std::vector<size_t> widths(head.size(), 0);
-    for (const auto& cells : table) {
-        for (size_t c = 0; c < cells.size(); ++c) widths[c] = std::max(widths[c], cells[c].size());
-    }
     out << study.scene << ", " << study.width << "x" << study.height << ", " << study.threads
         << " threads; reference: path, " << study.reference_spp << " spp ("
         << fixed(study.reference_seconds, 3) << " s), mean luminance "
         << number(study.reference_mean_luminance) << (markdown ? "\n\n" : "\n");
-    for (size_t row = 0; row < table.size(); ++row) {
-        const auto& cells = table[row];
-        for (size_t c = 0; c < cells.size(); ++c) {
-            if (markdown) out << "| ";
-            out << (c == 0 ? std::left : std::right) << std::setw(int(widths[c])) << cells[c]
-                << (markdown ? " " : "  ");
-        }
-        out << (markdown ? "|\n" : "\n");
-        if (markdown && row == 0) {
-            for (size_t c = 0; c < cells.size(); ++c) {
-                out << "|" << (c == 0 ? ":" : "") << std::string(widths[c] + 1, '-')
-                    << (c == 0 ? "" : ":");
-            }
-            out << "|\n";
-        }
-    }
-    out << std::left;
+    write_aligned_table(out, table, markdown);
 }
 
 void write_convergence_files(const ConvergenceOptions& options, const ConvergenceStudy& study) {

@@ -175,31 +175,11 @@ void print_suite_table(std::ostream& out, const std::vector<SuiteRow>& rows,
         }
         table.push_back(cells);
     }
-    std::vector<size_t> widths(head.size(), 0);
-    for (const auto& cells : table) {
-        for (size_t c = 0; c < cells.size(); ++c) widths[c] = std::max(widths[c], cells[c].size());
-    }
     const std::string width_text = rows.empty() ? "?" : std::to_string(rows.front().width);
     out << "machine: " << machine.cpu << ", " << machine.cores << " cores, " << machine.isa
         << "; images " << width_text << "x" << width_text << ", 1 spp"
         << (markdown ? "\n\n" : "\n");
-    for (size_t row = 0; row < table.size(); ++row) {
-        const auto& cells = table[row];
-        for (size_t c = 0; c < cells.size(); ++c) {
-            if (markdown) out << "| ";
-            out << (c == 0 ? std::left : std::right) << std::setw(int(widths[c])) << cells[c]
-                << (markdown ? " " : "  ");
-        }
-        out << (markdown ? "|\n" : "\n");
-        if (markdown && row == 0) {
-            for (size_t c = 0; c < cells.size(); ++c) {
-                out << "|" << (c == 0 ? ":" : "") << std::string(widths[c] + 1, '-')
-                    << (c == 0 ? "" : ":");
-            }
-            out << "|\n";
-        }
-    }
-    out << std::left;
+    write_aligned_table(out, table, markdown);
 }
 
 void write_suite_files(const SuiteOptions& options, const std::vector<SuiteRow>& rows,

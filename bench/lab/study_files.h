@@ -1,10 +1,14 @@
 #pragma once
 // The files a study writes (bench/lab/): its output folder, whole text files, and the quoting of
 // CSV fields and JSON strings, one definition for every study.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <ostream>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include "core/error.h"
 
@@ -37,6 +41,34 @@ inline std::string json_string(const std::string& s) {
 // `s` as a CSV field: quoted when it holds a comma or a quote.
 inline std::string csv_field(const std::string& s) {
     return s.find_first_of(",\"") == std::string::npos ? s : "\"" + s + "\"";
+}
+
+// `table` (its first row the heading) as aligned text columns, or as a Markdown table: the first
+// column left-aligned, the others right-aligned.
+inline void write_aligned_table(std::ostream& out,
+                                const std::vector<std::vector<std::string>>& table, bool markdown) {
+    std::vector<size_t> widths;
+    for (const auto& cells : table) {
+        widths.resize(std::max(widths.size(), cells.size()), 0);
+        for (size_t c = 0; c < cells.size(); ++c) widths[c] = std::max(widths[c], cells[c].size());
+    }
+    for (size_t row = 0; row < table.size(); ++row) {
+        const auto& cells = table[row];
+        for (size_t c = 0; c < cells.size(); ++c) {
+            if (markdown) out << "| ";
+            out << (c == 0 ? std::left : std::right) << std::setw(int(widths[c])) << cells[c]
+                << (markdown ? " " : "  ");
+        }
+        out << (markdown ? "|\n" : "\n");
+        if (markdown && row == 0) {
+            for (size_t c = 0; c < cells.size(); ++c) {
+                out << "|" << (c == 0 ? ":" : "") << std::string(widths[c] + 1, '-')
+                    << (c == 0 ? "" : ":");
+            }
+            out << "|\n";
+        }
+    }
+    out << std::left;
 }
 
 }  // namespace rayo
