@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <variant>
 
@@ -90,8 +91,11 @@ inline bool light_is_delta(const Light& light) {
 // Whether the radiosity solve shoots the light (an area light's surface is a patch), so that
 // its light on patch-covered surfaces is in the solution already (apps/scene/area_light_emitters.h
 // puts only area lights' surfaces in the scene).
+template <typename L>
+constexpr bool kLightInRadiositySolve = std::is_same_v<L, AreaLight>;
 inline bool light_in_radiosity_solve(const Light& light) {
-    return std::holds_alternative<AreaLight>(light);
+    return std::visit(
+        [](const auto& l) { return kLightInRadiositySolve<std::decay_t<decltype(l)>>; }, light);
 }
 
 // The units of LightSample::radiance. A light with an extent (area lights, emissive meshes)
@@ -101,8 +105,11 @@ inline bool light_in_radiosity_solve(const Light& light) {
 // is the irradiance E = π·Il (docs/path-tracing.md, "Units").
 // Seed 000's local model (Whitted, ambient occlusion) shades with Il: an extended light's E is
 // scaled by 1/π, so a Lambertian surface shows kd·E/π as the radiosity solve gives it.
+template <typename L>
+constexpr float kLightLocalModelScale = L::kDelta ? 1.0f : 1.0f / kPi;
 inline float light_local_model_scale(const Light& light) {
-    return light_is_delta(light) ? 1.0f : 1.0f / kPi;
+    return std::visit(
+        [](const auto& l) { return kLightLocalModelScale<std::decay_t<decltype(l)>>; }, light);
 }
 // A physically based integrator (path) weighs the incident radiance with the scattering function
 // f (a Lambertian surface: kd/π): a point's or a direction's Il becomes the irradiance π·Il, so

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <variant>
 
 #include "shading/media.h"
 #include "shading/optics.h"
@@ -93,27 +94,35 @@ glm::vec2 WhittedIntegrator::sample_u(const SurfaceHit& hit, size_t index, int s
                           static_cast<uint32_t>(count));
 }
 
+template <typename L>
 WhittedIntegrator::LightSide WhittedIntegrator::light_sample(const ShadingPoint& p,
-                                                             const SurfaceHit& hit,
-                                                             const Light& light, const glm::vec2& u,
+                                                             const SurfaceHit& hit, const L& light,
+                                                             int count, const glm::vec2& u,
                                                              Ray& shadow, Vec3& to_light,
                                                              Vec3& light_radiance) const {
     // Pure emitters skip the lights (other materials keep their shadow rays and counts as before).
     if (p.material().emissive() && !p.material().lit()) return LightSide::None;
     // An area light's surface shoots in the radiosity solve: its light is in the solution.
-    if (p.radiosity && light_in_radiosity_solve(light)) return LightSide::None;
+    if constexpr (kLightInRadiositySolve<L>) {
+        if (p.radiosity) return LightSide::None;
+    }
     LightSample sample;
-    if (!sample_light(light, hit.position, u, sample)) return LightSide::None;
+    if (!light.sample(hit.position, u, sample)) return LightSide::None;
     to_light = sample.direction;
     const float light_distance = sample.distance;
-    light_radiance = light_sample_radiance(sample, m_images) / sample.pdf;
-    // An area light is radiometric (radiance L, so the samples average to its irradiance E):
-    // its light on a Lambertian surface is kd·E/π, the same the radiosity solve gives it
-    // (docs/radiosity.md, "The π of area lights"). Point and directional lights keep seed 000's
-    // Il, with no 1/π. The whole Phong term is scaled, so the highlight keeps its ratio to the
-    // diffuse light.
-    light_radiance *= light_local_model_scale(light);
-    const int count = light_sample_count(light);
+    if constexpr (L::kDelta) {
+        // A point or a direction: pdf 1, no emission image, the local model's scale 1 (below),
+        // so the radiance is the sample's as it is (docs/performance.md, "Shading").
+        light_radiance = sample.radiance;
+    } else {
+        light_radiance = light_sample_radiance(sample, m_images) / sample.pdf;
+        // An area light is radiometric (radiance L, so the samples average to its irradiance
+        // E): its light on a Lambertian surface is kd·E/π, the same the radiosity solve gives
+        // it (docs/radiosity.md, "The π of area lights"). Point and directional lights keep
+        // seed 000's Il, with no 1/π. The whole Phong term is scaled, so the highlight keeps its
+        // ratio to the diffuse light.
+        light_radiance *= kLightLocalModelScale<L>;
+    }
     if (count > 1) light_radiance /= static_cast<float>(count);
     // Lights behind the surface (as seen from the arriving side) contribute nothing, unless the
     // surface is translucent and the light is wholly behind it (both normals agree).
@@ -201,20 +210,26 @@ Vec3 WhittedIntegrator::shade(const Ray& ray, const SurfaceHit& hit, int depth, 
     // per light (seed 004), or per point of an area light.
     Vec3 color = ambient_and_emission(p);
     for (size_t index = 0; index < m_scene.lights.size(); ++index) {
-        const Light& light = m_scene.lights[index];
-        const int count = light_sample_count(light);
-        for (int s = 0; s < count; ++s) {
-            Ray shadow;
-            Vec3 to_light, light_radiance;
-            const LightSide side = light_sample(p, hit, light, sample_u(hit, index, s, count),
-                                                shadow, to_light, light_radiance);
-            if (side == LightSide::None) continue;
-            ++counters.shadow;
-            const Vec3 filter = shadow_transmittance(shadow, counters);
-            if (filter == Vec3(0.0f)) continue;
-            const Vec3 light_color = direct(p, side, to_light, light_radiance);
-            color += filter == Vec3(1.0f) ? light_color : filter * light_color;
-        }
+        // One dispatch on the light's kind per light, not per sample (docs/performance.md,
+        // "Shading").
+        std::visit(
+            [&](const auto& light) {
+                const int count = light.sample_count();
+                for (int s = 0; s < count; ++s) {
+                    Ray shadow;
+                    Vec3 to_light, light_radiance;
+                    const LightSide side =
+                        light_sample(p, hit, light, count, sample_u(hit, index, s, count), shadow,
+                                     to_light, light_radiance);
+                    if (side == LightSide::None) continue;
+                    ++counters.shadow;
+                    const Vec3 filter = shadow_transmittance(shadow, counters);
+                    if (filter == Vec3(0.0f)) continue;
+                    const Vec3 light_color = direct(p, side, to_light, light_radiance);
+                    color += filter == Vec3(1.0f) ? light_color : filter * light_color;
+                }
+            },
+            m_scene.lights[index]);
     }
     return add_transport(ray, hit, p, depth, weight, color, counters);
 }
@@ -398,26 +413,29 @@ void WhittedIntegrator::shade_level(std::vector<PathNode>& nodes, size_t begin, 
         }
     };
     for (size_t index = 0; index < m_scene.lights.size(); ++index) {
-        const Light& light = m_scene.lights[index];
-        const int samples = light_sample_count(light);
-        for (int s = 0; s < samples; ++s) {
-            int shadow_count = 0;
-            for (size_t k = begin; k < end; ++k) {
-                const PathNode& node = nodes[k];
-                if (!node.found) continue;
-                const int j = shadow_count;
-                sides[j] =
-                    light_sample(node.point, node.hit, light, sample_u(node.hit, index, s, samples),
-                                 shadows[j], to_lights[j], light_radiances[j]);
-                if (sides[j] == LightSide::None) continue;
-                shadow_node[j] = k;
-                if (++shadow_count == kBatch) {
-                    flush(shadow_count);
-                    shadow_count = 0;
+        std::visit(
+            [&](const auto& light) {
+                const int samples = light.sample_count();
+                for (int s = 0; s < samples; ++s) {
+                    int shadow_count = 0;
+                    for (size_t k = begin; k < end; ++k) {
+                        const PathNode& node = nodes[k];
+                        if (!node.found) continue;
+                        const int j = shadow_count;
+                        sides[j] = light_sample(node.point, node.hit, light, samples,
+                                                sample_u(node.hit, index, s, samples), shadows[j],
+                                                to_lights[j], light_radiances[j]);
+                        if (sides[j] == LightSide::None) continue;
+                        shadow_node[j] = k;
+                        if (++shadow_count == kBatch) {
+                            flush(shadow_count);
+                            shadow_count = 0;
+                        }
+                    }
+                    if (shadow_count > 0) flush(shadow_count);
                 }
-            }
-            if (shadow_count > 0) flush(shadow_count);
-        }
+            },
+            m_scene.lights[index]);
     }
 }
 

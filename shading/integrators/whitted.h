@@ -156,9 +156,12 @@ class WhittedIntegrator {
     // Which side of the surface a light sample lies on: the side the ray arrived on (the local
     // model), the far side of a translucent surface (diffuse transmission), or neither.
     enum class LightSide { None, Front, Back };
-    // Sample u of `light`: the shadow ray toward it, the unit direction to it and its radiance
-    // at the hit divided by the pdf and by the light's sample count.
-    LightSide light_sample(const ShadingPoint& p, const SurfaceHit& hit, const Light& light,
+    // Sample u of `light` (one of `count`): the shadow ray toward it, the unit direction to it
+    // and its radiance at the hit divided by the pdf and by `count`. Of one light type L, so
+    // that a point or a directional light does only its own work (docs/performance.md,
+    // "Shading").
+    template <typename L>
+    LightSide light_sample(const ShadingPoint& p, const SurfaceHit& hit, const L& light, int count,
                            const glm::vec2& u, Ray& shadow, Vec3& to_light,
                            Vec3& light_radiance) const;
     // The u of sample s of light `index` at the hit (light_sample_u; the centre for one sample).
