@@ -48,6 +48,11 @@ void SurfaceShading::interact(const Ray& ray, const SurfaceHit& hit, SurfaceInte
     p.facing_geometric = p.entering ? hit.geometric_normal : -hit.geometric_normal;
     p.normal = p.entering ? hit.shading_normal : -hit.shading_normal;
     p.base = &base;
+    // The path integrator fills one interaction per vertex in turn: an untextured hit after a
+    // textured one must not keep that one's coefficients (the ground under a textured glTF
+    // model reflected the model's base colour into its bounce light; docs/path-tracing.md,
+    // "Against Cycles").
+    p.textured.reset();
     // Procedural textures (seed 003 ch. 3): untextured materials skip this and are used as is.
     if (base.textures.any()) {
         p.textured = material_at(base, m_scene.textures, hit.position);
