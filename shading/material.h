@@ -46,7 +46,14 @@ struct SurfaceCoefficients {
     bool fresnel = false;
     Vec3 translucency{0.0f};  // perfect diffuse transmission, seed 001: lights behind the surface
     Vec3 absorption{0.0f};    // Beer–Lambert σ per unit length inside the object (seed 004)
-    Vec3 emission{0.0f};      // radiance the surface's front side sends to every ray that sees it
+    Vec3 emission{0.0f};      // radiance the surface sends to every ray that sees an emitting side
+    // Two-sided (the default): both sides of the surface are the same surface, each with its own
+    // light. The back (the side the geometric normal points away from) emits, and in the
+    // radiosity solve receives and reflects, as the front does: real assets are not wound
+    // consistently. One-sided (JSON "double_sided": false, glTF doubleSided false, an area
+    // light's own surface): only the front emits and holds a radiosity patch; the back keeps
+    // what each integrator did before (docs/radiosity.md, docs/path-tracing.md).
+    bool double_sided = true;
     // The light (index into ShadingScene::lights) that samples this emitter's surface, whose pdf
     // a sampling integrator weighs a hit on it with (multiple importance sampling: the area
     // lights' own surfaces, apps/scene/area_light_emitters.h); -1: no light samples it.
@@ -67,6 +74,8 @@ struct SurfaceCoefficients {
     bool translucent() const { return translucency != Vec3(0.0f); }
     bool absorbing() const { return absorption != Vec3(0.0f); }
     bool emissive() const { return emission != Vec3(0.0f); }
+    // Whether a ray arriving on the front (`front`) or the back sees the emission.
+    bool emits_toward(bool front) const { return emissive() && (front || double_sided); }
     // Whether lights change its colour at all (a pure emitter, such as an area light's own
     // surface, needs no shadow rays).
     bool lit() const { return kd != Vec3(0.0f) || ks != Vec3(0.0f) || translucent(); }

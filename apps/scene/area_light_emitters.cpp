@@ -15,6 +15,7 @@ void add_area_light_emitters(SceneDescription& d) {
         m.ka = m.kd = m.ks = Vec3(0.0f);
         m.emission = light->radiance();
         m.emitter_light = static_cast<int32_t>(i);
+        m.double_sided = false;  // an area light emits on its front only (shading/area_light.h)
         const auto id = static_cast<uint32_t>(d.shading.materials.size());
         d.shading.materials.push_back(m);
         switch (light->shape) {

@@ -1222,7 +1222,7 @@ Material SceneParser::parse_material(const Json& value, const std::string& point
     require_object(value, pointer, "a material object");
     check_keys(value, pointer,
                {"ka", "kd", "ks", "shininess", "specular", "reflect", "transmit", "ior", "fresnel",
-                "translucency", "absorption", "emission", "bump"});
+                "translucency", "absorption", "emission", "bump", "double_sided"});
     Material m;
     m.name = name;
     // Each of kd, ka, ks is a colour or the name of a texture (seed 003 ch. 3); kd, ks and
@@ -1289,6 +1289,13 @@ Material SceneParser::parse_material(const Json& value, const std::string& point
         m.emission = factor;  // × the image
     } else {
         m.emission = colour_or(value, pointer, "emission", Vec3(0.0f));
+    }
+    // Both sides emit and, in the radiosity solve, receive (docs/radiosity.md) unless false.
+    if (const Json* v = find(value, "double_sided")) {
+        if (!v->is_boolean()) {
+            fail(child(pointer, "double_sided"), "expected true or false, got " + describe(*v));
+        }
+        m.double_sided = v->get<bool>();
     }
     return m;
 }

@@ -579,6 +579,9 @@ Material material_from_gltf(const tinygltf::Material& m, size_t index, const std
                     static_cast<float>(pbr.baseColorFactor[2]));
     apply_metallic_roughness(out, base, static_cast<float>(pbr.metallicFactor),
                              pbr.roughnessFactor);
+    // doubleSided (glTF 2.0 §3.9.5, default false): a one-sided material emits, and holds
+    // radiosity patches, on its front only.
+    out.double_sided = m.doubleSided;
     // emissiveFactor (× KHR_materials_emissive_strength) is the radiance the surface sends.
     if (m.emissiveFactor.size() == 3) {
         double strength = 1.0;

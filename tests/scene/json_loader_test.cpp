@@ -247,6 +247,10 @@ TEST(JsonLoaderDefaults, MaterialAndLightDefaults) {
     expect_vec3(m.reflect, 0, 0, 0, 0);
     expect_vec3(m.transmit, 0, 0, 0, 0);
     EXPECT_EQ(m.ior, 1.0f);
+    EXPECT_TRUE(m.double_sided);
+    EXPECT_FALSE(load(R"({"rayo": 1, "materials": {"m": {"double_sided": false}}})")
+                     .shading.materials.at(1)
+                     .double_sided);
     const auto& point = std::get<PointLight>(d.shading.lights[0]);
     EXPECT_EQ(point.attenuation.kind, Attenuation::Kind::None);
     expect_vec3(point.color, 1, 1, 1, 0);
@@ -424,6 +428,9 @@ INSTANTIATE_TEST_SUITE_P(
                   "scene.json#/objects/0/file", ".obj, .gltf, .glb, .ply, .stl or .off"},
         ErrorCase{"FresnelNotBoolean", R"({"rayo": 1, "materials": {"m": {"fresnel": 1}}})",
                   "scene.json#/materials/m/fresnel", "expected true or false"},
+        ErrorCase{"DoubleSidedNotBoolean",
+                  R"({"rayo": 1, "materials": {"m": {"double_sided": "yes"}}})",
+                  "scene.json#/materials/m/double_sided", "expected true or false"},
         ErrorCase{"NegativeAbsorption",
                   R"({"rayo": 1, "materials": {"m": {"absorption": [0, -1, 0]}}})",
                   "scene.json#/materials/m/absorption/1", "expected a number >= 0, got -1"},

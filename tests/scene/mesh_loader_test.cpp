@@ -80,6 +80,8 @@ TEST(MeshLoaderObj, MtlMaterialsMappedOntoPhong) {
     const Material& glass = materials[4];
     expect_vec3(glass.transmit, 0.75f, 0.75f, 0.75f);  // 1 − d
     EXPECT_FLOAT_EQ(glass.ior, 1.45f);
+    // MTL has no sidedness: every OBJ material is two-sided (docs/radiosity.md).
+    for (size_t i = 2; i < 5; ++i) EXPECT_TRUE(materials[i].double_sided) << i;
 
     ASSERT_EQ(mesh.triangle_count(), 4u);
     EXPECT_EQ(mesh.materials[0], 2u);
@@ -344,6 +346,19 @@ TEST(MeshLoaderGltf, EmissionFromFactorAndStrength) {
     const std::string bad = a.write_embedded(dir, "bad.gltf");
     const InputError error = expect_input_error([&] { load_gltf(bad, materials, "here"); });
     EXPECT_NE(error.message().find("emissiveFactor"), std::string::npos) << error.message();
+}
+
+TEST(MeshLoaderGltf, DoubleSidedMapsOntoTheMaterialsSidedness) {
+    // glTF 2.0 §3.9.5: doubleSided defaults to false, a one-sided material.
+    TempDir dir;
+    GltfAsset a = make_gltf(5123);
+    std::vector<Material> materials;
+    load_gltf(a.write_embedded(dir, "one.gltf"), materials, "here");
+    EXPECT_FALSE(materials.at(0).double_sided);
+    a.doc()["materials"][0]["doubleSided"] = true;
+    materials.clear();
+    load_gltf(a.write_embedded(dir, "two.gltf"), materials, "here");
+    EXPECT_TRUE(materials.at(0).double_sided);
 }
 
 TEST(MeshLoaderGltf, VertexColoursFromNormalizedBytes) {
