@@ -21,14 +21,16 @@ void basis(const Vec3& w, Vec3& t, Vec3& b) {
 }
 
 // A point `target` of a flat emitter of area `area` and unit normal `normal` seen from `point`:
-// the solid-angle pdf of uniform area sampling is d²/(A·cos θl), θl the angle at the light.
+// the solid-angle pdf of uniform area sampling is d²/(A·cos θl), θl the angle at the light. A
+// two-sided emitter (a triangle of a two-sided material, shading/material.h) is seen from both.
 bool flat_sample(const Vec3& point, const Vec3& target, const Vec3& normal, float area,
-                 const Vec3& radiance, LightSample& out) {
+                 const Vec3& radiance, LightSample& out, bool two_sided = false) {
     const Vec3 offset = target - point;
     const float distance = glm::length(offset);
     if (!(distance > 0.0f)) return false;
     out.direction = offset / distance;
-    const float cos_light = -glm::dot(normal, out.direction);
+    float cos_light = -glm::dot(normal, out.direction);
+    if (two_sided) cos_light = std::abs(cos_light);
     if (!(cos_light > 0.0f)) return false;  // the back of a one-sided emitter
     out.distance = distance;
     out.radiance = radiance;
@@ -39,14 +41,16 @@ bool flat_sample(const Vec3& point, const Vec3& target, const Vec3& normal, floa
 
 }  // namespace
 
-void MeshEmitter::add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& radiance) {
-    add(a, b, c, radiance, kNoEmissionImage, glm::vec2(0.0f), glm::vec2(0.0f), glm::vec2(0.0f));
+void MeshEmitter::add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& radiance,
+                      bool two_sided) {
+    add(a, b, c, radiance, kNoEmissionImage, glm::vec2(0.0f), glm::vec2(0.0f), glm::vec2(0.0f),
+        two_sided);
 }
 
 void MeshEmitter::add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& radiance,
                       uint32_t material, const glm::vec2& uv_a, const glm::vec2& uv_b,
-                      const glm::vec2& uv_c) {
-    const Triangle t{a, b - a, c - a, radiance, material, uv_a, uv_b, uv_c};
+                      const glm::vec2& uv_c, bool two_sided) {
+    const Triangle t{a, b - a, c - a, radiance, material, uv_a, uv_b, uv_c, two_sided};
     const float area = 0.5f * glm::length(glm::cross(t.e1, t.e2));
     const float weight = area * luminance(radiance);
     if (!(area > 0.0f) || !(weight > 0.0f) || !std::isfinite(weight)) return;
@@ -76,7 +80,8 @@ bool MeshEmitter::sample(const Vec3& point, const glm::vec2& u, LightSample& out
     const float cross_length = glm::length(cross);
     const float triangle_area = 0.5f * cross_length;
     const float effective_area = triangle_area * total / weight;
-    if (!flat_sample(point, target_point, cross / cross_length, effective_area, t.radiance, out)) {
+    if (!flat_sample(point, target_point, cross / cross_length, effective_area, t.radiance, out,
+                     t.two_sided)) {
         return false;
     }
     if (t.image_material != kNoEmissionImage) {
@@ -187,11 +192,12 @@ bool AreaLight::sample(const Vec3& point, const glm::vec2& u, LightSample& out) 
 namespace rayo {
 namespace {
 
-// The density d²/(A·cos θl) of a flat emitter's point `hit` (on its front) seen along
-// `direction` from `point`, or 0 from behind (flat_sample's pdf).
+// The density d²/(A·cos θl) of a flat emitter's point `hit` (on its front, or either side when
+// two-sided) seen along `direction` from `point`, or 0 from behind (flat_sample's pdf).
 float flat_pdf(const Vec3& point, const Vec3& hit, const Vec3& normal, float area,
-               const Vec3& direction) {
-    const float cos_light = -glm::dot(normal, direction);
+               const Vec3& direction, bool two_sided = false) {
+    float cos_light = -glm::dot(normal, direction);
+    if (two_sided) cos_light = std::abs(cos_light);
     if (!(cos_light > 0.0f) || !(area > 0.0f)) return 0.0f;
     const Vec3 offset = hit - point;
     return glm::dot(offset, offset) / (area * cos_light);
@@ -231,7 +237,7 @@ float MeshEmitter::pdf(const Vec3& point, const Vec3& direction) const {
         const float weight = m_cdf[i] - (i == 0 ? 0.0f : m_cdf[i - 1]);
         const float effective_area = 0.5f * cross_length * total / weight;
         density += flat_pdf(point, point + distance * direction, cross / cross_length,
-                            effective_area, direction);
+                            effective_area, direction, t.two_sided);
     }
     return density;
 }

@@ -34,15 +34,19 @@ class MeshEmitter {
         // p0 + e1 and p0 + e2. kNoEmissionImage: `radiance` is uniform.
         uint32_t image_material = kNoEmissionImage;
         glm::vec2 uv0{0.0f}, uv1{0.0f}, uv2{0.0f};
+        // Emits on both sides (a two-sided material, shading/material.h), else toward e1 × e2.
+        bool two_sided = false;
     };
     // Ignores triangles of zero area or zero radiance. The weight of a triangle in the pick is
     // its area times the luminance of `radiance` (the factor: an emission image is not looked
     // at, so the estimator stays unbiased wherever the image is non-zero).
-    void add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& radiance);
+    void add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& radiance,
+             bool two_sided = false);
     // The same for a triangle whose material `material` has an emission image, with the
     // texture coordinates of a, b, c.
     void add(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& radiance, uint32_t material,
-             const glm::vec2& uv_a, const glm::vec2& uv_b, const glm::vec2& uv_c);
+             const glm::vec2& uv_a, const glm::vec2& uv_b, const glm::vec2& uv_c,
+             bool two_sided = false);
     bool empty() const { return m_triangles.empty(); }
     size_t size() const { return m_triangles.size(); }
     float area() const { return m_area; }

@@ -63,9 +63,9 @@ size_t add_mesh_emitter_light(SceneDescription& d, int samples) {
                 // The emission image multiplies the factor at the sampled point.
                 const auto& v = mesh.triangles[t];
                 emitter->add(p[0], p[1], p[2], m.emission, id, mesh.uvs[v[0]], mesh.uvs[v[1]],
-                             mesh.uvs[v[2]]);
+                             mesh.uvs[v[2]], m.double_sided);
             } else {
-                emitter->add(p[0], p[1], p[2], m.emission);
+                emitter->add(p[0], p[1], p[2], m.emission, m.double_sided);
             }
         }
     };

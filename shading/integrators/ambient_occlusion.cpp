@@ -46,7 +46,7 @@ Vec3 AmbientOcclusionIntegrator::radiance(const Ray& ray, const PixelSample& sam
     }
     Vec3 color = kd * (static_cast<float>(escaped) / static_cast<float>(count));
     if (m_settings.direct) color += direct_light(hit, normal, origin, kd, sample, counters);
-    if (material.emissive() && surface.entering) color += material.emission;
+    if (material.emits_toward(surface.entering)) color += material.emission;
     return color;
 }
 

@@ -88,7 +88,8 @@ Vec3 PathIntegrator::radiance(const Ray& camera_ray, const PixelSample& sample,
         }
         m_surfaces.interact(ray, v.hit, v.surface);
         const SurfaceCoefficients& material = v.surface.material();
-        if (material.emissive() && v.surface.entering) {
+        // An emitter is seen on its front, and on its back when two-sided (material.h).
+        if (material.emits_toward(v.surface.entering)) {
             float weight = 1.0f;
             if (!specular && material.emitter_light >= 0) {
                 if (m_settings.strategy == LightStrategy::Light) {

@@ -83,8 +83,8 @@ Vec3 WhittedIntegrator::ambient_and_emission(const ShadingPoint& p) const {
     const SurfaceCoefficients& m = p.material();
     Vec3 color = p.radiosity ? p.radiosity_reflected : m.ka * m_scene.ambient_light;
     // An emitter is seen on its front, the side its geometric normal points to (the outside of
-    // closed shapes, a disk's normal, a polygon's winding).
-    if (m.emissive() && p.entering) color += m.emission;
+    // closed shapes, a disk's normal, a polygon's winding), and on its back when two-sided.
+    if (m.emits_toward(p.entering)) color += m.emission;
     return color;
 }
 

@@ -32,8 +32,9 @@ SceneDescription load(const std::string& text) {
 using rayo_test::Estimate;
 using rayo_test::estimate_along;
 
-// A closed cube [-1, 1]³ of six polygons wound inward, so their emitting front faces the inside.
-std::string inward_cube() {
+// A closed cube [-1, 1]³ of six polygons wound inward, so their emitting front faces the inside
+// (or outward: the inside then sees their backs).
+std::string inward_cube(bool outward = false) {
     std::ostringstream out;
     bool first = true;
     for (int axis = 0; axis < 3; ++axis) {
@@ -44,7 +45,7 @@ std::string inward_cube() {
             out << (first ? "" : ", ") << R"({"type": "polygon", "vertices": [)";
             first = false;
             for (int k = 0; k < 4; ++k) {
-                const int c = side > 0 ? 3 - k : k;
+                const int c = (side > 0) != outward ? 3 - k : k;
                 int p[3];
                 p[axis] = side;
                 p[u] = corners[c][0];
@@ -90,6 +91,29 @@ TEST(PathIntegrator, AWhiteFurnaceHoldsEmissionOverOneMinusAlbedo) {
         const double expected = emission / (1.0 - albedo);
         EXPECT_NEAR(e.mean, expected, 0.005 * expected) << "albedo " << albedo;
         EXPECT_LT(e.standard_error, 0.0017 * expected) << "the test cannot resolve 0.5%";
+    }
+}
+
+TEST(PathIntegrator, AnOutwardWoundFurnaceIsTheSameFurnaceUnlessOneSided) {
+    // The camera inside sees every wall's back. Two-sided (the default), a back emits and
+    // scatters as a front does: E/(1 − ρ) within the inward furnace's 0.5%. One-sided, a back
+    // emits nothing (its scattering is as before, two-sided lobes): the box is black.
+    for (const std::string sidedness : {"", R"(, "double_sided": false)"}) {
+        SCOPED_TRACE(sidedness);
+        const double albedo = 0.5, emission = 0.25;
+        std::ostringstream text;
+        text << R"({"rayo": 1, "background": [0, 0, 0],
+          "materials": {"default": {"ka": 0, "kd": )"
+             << albedo << R"(, "emission": )" << emission << sidedness << R"(}},
+          "render": {"integrator": {"type": "path", "max_depth": 1024}},
+          "objects": [)"
+             << inward_cube(true) << "]}";
+        const SceneDescription d = load(text.str());
+        const Estimate e =
+            estimate_along(d, Vec3(0.1f, -0.2f, 0.3f), Vec3(0.3f, 0.5f, -1), 1u << 18);
+        const double expected = sidedness.empty() ? emission / (1.0 - albedo) : 0.0;
+        EXPECT_NEAR(e.mean, expected, 0.005 * emission / (1.0 - albedo));
+        if (!sidedness.empty()) EXPECT_EQ(e.mean, 0.0);
     }
 }
 

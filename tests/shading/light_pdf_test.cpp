@@ -84,6 +84,26 @@ TEST(LightPdf, RectangleDiskSphereAndMeshMatchTheirSamplesAndIntegrateToOne) {
     expect_consistent(mesh, Vec3(0.3f, 0, -0.2f), "mesh");
 }
 
+TEST(LightPdf, TwoSidedMeshTrianglesAreSampledFromBothSides) {
+    // A triangle of a two-sided material (shading/material.h) emits on both sides: a point
+    // behind it gets samples whose density its pdf matches; a one-sided triangle gives none.
+    auto two_sided = std::make_shared<MeshEmitter>();
+    two_sided->add(Vec3(-1, 2, -1), Vec3(1, 2, -1), Vec3(1, 2, 1), Vec3(1.0f), true);
+    two_sided->add(Vec3(-1, 2, -1), Vec3(1, 2, 1), Vec3(-1, 2, 1), Vec3(3.0f), true);
+    AreaLight mesh;
+    mesh.shape = AreaLight::Shape::Mesh;
+    mesh.mesh = two_sided;
+    const Vec3 behind(0.3f, 4.0f, -0.2f), in_front(0.3f, 0.0f, -0.2f);
+    expect_consistent(mesh, behind, "two-sided mesh, behind");
+    expect_consistent(mesh, in_front, "two-sided mesh, in front");
+    auto one_sided = std::make_shared<MeshEmitter>();
+    one_sided->add(Vec3(-1, 2, -1), Vec3(1, 2, -1), Vec3(1, 2, 1), Vec3(1.0f));
+    mesh.mesh = one_sided;
+    LightSample s;
+    EXPECT_FALSE(sample_light(mesh, behind, glm::vec2(0.3f, 0.4f), s));
+    EXPECT_EQ(light_pdf(mesh, behind, Vec3(0, -1, 0)), 0.0f);
+}
+
 TEST(LightPdf, ThePunctualLightsAreDeltas) {
     for (const Light& light :
          {Light(PointLight{}), Light(SpotLight{}), Light(DirectionalLight{})}) {
