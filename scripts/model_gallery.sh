@@ -29,6 +29,8 @@ set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(dirname "$here")
+# shellcheck source=scripts/blender_view.sh
+source "$here/blender_view.sh"
 out="$root/build/model_gallery"
 rayo="$root/build/rayo"
 size=512
@@ -143,16 +145,8 @@ for entry in "${assets[@]}"; do
         cycles="earlier run"
     elif [[ $blender == yes ]]; then
         ref="$out/${name}_blender.png"
-        # eye X Y Z, look_at X Y Z, up X Y Z, fov HxV degrees
-        read -r ex ey ez lx ly lz ux uy uz < <(echo "$view" |
-            sed -E 's/eye ([^ ]+) ([^ ]+) ([^,]+), look_at ([^ ]+) ([^ ]+) ([^,]+), up ([^ ]+) ([^ ]+) ([^,]+),.*/\1 \2 \3 \4 \5 \6 \7 \8 \9/')
-        vfov=$(echo "$view" | sed -E 's/.*fov [^x]+x([0-9.eE+-]+) degrees.*/\1/')
-        suns=()
-        # rayo's lights as --stats lists them: directional ones (the automatic key and fill)
-        # become Cycles suns; emitters (the Cornell box's Ke) come with the imported file.
-        while read -r dx dy dz intensity; do
-            suns+=("--sun=$dx,$dy,$dz,$intensity")  # "=": values may start with "-"
-        done < <(sed -n -E 's/^  light [0-9]+ .* directional direction ([^ ]+) ([^ ]+) ([^ ]+) color [^ ]+ [^ ]+ [^ ]+ intensity ([^ ]+)$/\1 \2 \3 \4/p' "$log")
+        mapfile -t camera < <(blender_view_args "$log")
+        mapfile -t suns < <(blender_sun_args "$log")
         extra=()
         [[ " $flags " == *" --no-ground "* ]] && extra+=(--no-ground)
         # No emitter or file light: rayo's ambient term (ka = 0.1 base colour for glTF) as a
@@ -161,8 +155,7 @@ for entry in "${assets[@]}"; do
         start=$(date +%s%N)
         if nice -n 10 blender -b --factory-startup -t "$threads" -P "$here/model_gallery_blender.py" -- \
             --model "${reference:-$file}" --out "$ref" --size "$size" --samples "$samples" \
-            "--eye=$ex,$ey,$ez" "--look-at=$lx,$ly,$lz" "--up=$ux,$uy,$uz" "--vfov=$vfov" \
-            "${suns[@]}" "${extra[@]}" > "$out/${name}_blender.log" 2>&1 && [[ -f "$ref" ]]; then
+            "${camera[@]}" "${suns[@]}" "${extra[@]}" > "$out/${name}_blender.log" 2>&1 && [[ -f "$ref" ]]; then
             cycles="$((($(date +%s%N) - start) / 1000000000)) s"
             pair_inputs+=("$ref")
         else

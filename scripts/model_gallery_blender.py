@@ -6,6 +6,11 @@ importers and rendered by Cycles from the camera rayo used, lit like rayo's auto
         --model FILE --out PNG --size 512 --samples 32 \
         --eye X,Y,Z --look-at X,Y,Z --up X,Y,Z --vfov DEGREES \
         [--sun DX,DY,DZ,INTENSITY ...] [--ambient L] [--background R,G,B] [--no-ground]
+        [--max-bounces N] [--match-path] [--obj-lambert] [--no-clearcoat]
+
+An --out ending in .exr is written as linear float OpenEXR (scene-referred, no view transform),
+anything else as 8-bit PNG through the 'Standard' view. scripts/cycles_compare.sh uses the last
+four options (docs/path-tracing.md, "Against Cycles").
 
 Positions, directions and the up vector are in rayo's (the file's) frame, +y up; the glTF and
 OBJ importers turn +y up into Blender's +z up, (x, y, z) -> (x, -z, y), and the PLY importer
@@ -41,6 +46,16 @@ def parse_args():
     p.add_argument("--background", default="0.18,0.2,0.24",
                    help="what camera rays that miss see (rayo's model background)")
     p.add_argument("--no-ground", action="store_true")
+    p.add_argument("--max-bounces", type=int, default=4,
+                   help="Cycles' bounces of every kind (rayo's path --max-depth minus 1)")
+    p.add_argument("--match-path", action="store_true",
+                   help="sample like rayo's path integrator: no adaptive sampling, a 1-pixel "
+                   "box filter, no clamping, no light threshold, no glossy blur, caustics on")
+    p.add_argument("--obj-lambert", action="store_true",
+                   help="OBJ materials as rayo reads an MTL without Ks: Kd a Lambertian "
+                   "Diffuse BSDF, Ke an emission (the importer makes a Principled BSDF)")
+    p.add_argument("--no-clearcoat", action="store_true",
+                   help="Principled Clearcoat 0 (rayo does not read KHR_materials_clearcoat)")
     p.add_argument("--check-import", action="store_true",
                    help="only import the model and report whether that worked")
     return p.parse_args(argv)
@@ -184,14 +199,127 @@ def set_world(ambient, background):
     links.new(mix.outputs["Shader"], out.inputs["Surface"])
 
 
+def obj_materials_as_lambert():
+    """The OBJ importer's Principled BSDF (Specular 0, Roughness 1: Burley's diffuse, brighter
+    toward grazing angles) replaced by what rayo makes of an MTL with Kd and Ke only: a
+    Lambertian Diffuse BSDF of colour Kd plus an emission of radiance Ke (strength 1)."""
+    for mat in bpy.data.materials:
+        if not mat.use_nodes:
+            continue
+        nodes, links = mat.node_tree.nodes, mat.node_tree.links
+        principled = [n for n in nodes if n.bl_idname == "ShaderNodeBsdfPrincipled"]
+        if len(principled) != 1:
+            continue
+        p = principled[0]
+        if (p.inputs["Specular"].default_value != 0.0 or p.inputs["Metallic"].default_value != 0.0
+                or any(i.is_linked for i in p.inputs)):
+            continue  # a specular or textured MTL material stays as the importer made it
+        colour = tuple(p.inputs["Base Color"].default_value)
+        emission = tuple(p.inputs["Emission"].default_value)[:3]
+        strength = p.inputs["Emission Strength"].default_value
+        nodes.clear()
+        diffuse = nodes.new("ShaderNodeBsdfDiffuse")
+        diffuse.inputs["Color"].default_value = colour
+        diffuse.inputs["Roughness"].default_value = 0.0  # Oren-Nayar with sigma 0: Lambert
+        out = nodes.new("ShaderNodeOutputMaterial")
+        if max(emission) * strength > 0.0:
+            emit = nodes.new("ShaderNodeEmission")
+            emit.inputs["Color"].default_value = emission + (1.0,)
+            emit.inputs["Strength"].default_value = strength
+            add = nodes.new("ShaderNodeAddShader")
+            links.new(diffuse.outputs["BSDF"], add.inputs[0])
+            links.new(emit.outputs["Emission"], add.inputs[1])
+            links.new(add.outputs["Shader"], out.inputs["Surface"])
+        else:
+            links.new(diffuse.outputs["BSDF"], out.inputs["Surface"])
+        print("model_gallery_blender.py: %r as Lambert kd %s, emission %s x %g"
+              % (mat.name, colour[:3], emission, strength))
+
+
+COLOUR_INPUTS = ("Base Color", "Emission")
+
+
+def feeds_colour(node, seen=None):
+    """Whether `node`'s output reaches a Principled BSDF's Base Color or Emission input, directly
+    or through the importer's mix nodes (factors, vertex colours)."""
+    seen = seen if seen is not None else set()
+    if node.name in seen:
+        return False
+    seen.add(node.name)
+    for output in node.outputs:
+        for link in output.links:
+            target = link.to_node
+            if target.bl_idname == "ShaderNodeBsdfPrincipled":
+                if link.to_socket.name in COLOUR_INPUTS:
+                    return True
+            elif target.bl_idname not in ("ShaderNodeSeparateColor", "ShaderNodeSeparateRGB",
+                                          "ShaderNodeNormalMap"):
+                if feeds_colour(target, seen):
+                    return True
+    return False
+
+
+def separate_colour_images():
+    """glTF decodes base colour and emissive textures as sRGB and the others as linear data.
+    Blender 3.4's glTF importer makes one image per glTF image and sets it to Non-Color when any
+    material reads data from it, so an image that is both (boxTexcoords.gltf: base colour and
+    metallic-roughness) is read as linear in its colour role too: such uses get an sRGB copy."""
+    copies = {}
+    for mat in bpy.data.materials:
+        if not mat.use_nodes:
+            continue
+        for node in mat.node_tree.nodes:
+            if node.bl_idname != "ShaderNodeTexImage" or node.image is None:
+                continue
+            image = node.image
+            if image.colorspace_settings.name != "Non-Color" or not feeds_colour(node):
+                continue
+            if image.name not in copies:
+                copy = image.copy()
+                copy.colorspace_settings.name = "sRGB"
+                copies[image.name] = copy
+                print("model_gallery_blender.py: image %r is data and colour: an sRGB copy for "
+                      "its colour uses" % image.name)
+            node.image = copies[image.name]
+
+
+def remove_clearcoat():
+    for mat in bpy.data.materials:
+        if not mat.use_nodes:
+            continue
+        for n in mat.node_tree.nodes:
+            if n.bl_idname == "ShaderNodeBsdfPrincipled" and (
+                    n.inputs["Clearcoat"].is_linked or n.inputs["Clearcoat"].default_value > 0):
+                for link in list(n.inputs["Clearcoat"].links):
+                    mat.node_tree.links.remove(link)
+                n.inputs["Clearcoat"].default_value = 0.0
+                print("model_gallery_blender.py: %r: clearcoat removed" % mat.name)
+
+
 def configure_render(args):
     scene = bpy.context.scene
     scene.render.engine = "CYCLES"
     scene.cycles.device = "CPU"
     scene.cycles.samples = args.samples
     scene.cycles.use_adaptive_sampling = True
-    scene.cycles.max_bounces = 4
+    scene.cycles.max_bounces = args.max_bounces
     scene.cycles.use_denoising = False
+    if args.match_path:
+        # rayo's path integrator: every pixel gets its samples, jittered over the pixel (a box
+        # of one pixel), no path's value clamped, every light sampled, every bounce kind up to
+        # the same depth, caustics kept.
+        scene.cycles.use_adaptive_sampling = False
+        scene.cycles.pixel_filter_type = "BOX"
+        scene.cycles.filter_width = 1.0
+        scene.cycles.sample_clamp_direct = 0.0
+        scene.cycles.sample_clamp_indirect = 0.0
+        scene.cycles.light_sampling_threshold = 0.0
+        scene.cycles.blur_glossy = 0.0
+        scene.cycles.caustics_reflective = True
+        scene.cycles.caustics_refractive = True
+        for kind in ("diffuse", "glossy", "transmission", "volume", "transparent_max"):
+            setattr(scene.cycles, kind + "_bounces", args.max_bounces)
+        scene.cycles.seed = 0
     if args.threads > 0:
         scene.render.threads_mode = "FIXED"
         scene.render.threads = args.threads
@@ -204,9 +332,15 @@ def configure_render(args):
     scene.view_settings.look = "None"
     scene.view_settings.exposure = 0.0
     scene.view_settings.gamma = 1.0
-    scene.render.image_settings.file_format = "PNG"
-    scene.render.image_settings.color_mode = "RGB"
-    scene.render.image_settings.color_depth = "8"
+    if args.out.lower().endswith(".exr"):  # linear, as rendered: the view transform is not applied
+        scene.render.image_settings.file_format = "OPEN_EXR"
+        scene.render.image_settings.color_mode = "RGB"
+        scene.render.image_settings.color_depth = "32"
+        scene.render.image_settings.exr_codec = "ZIP"
+    else:
+        scene.render.image_settings.file_format = "PNG"
+        scene.render.image_settings.color_mode = "RGB"
+        scene.render.image_settings.color_depth = "8"
     scene.render.filepath = os.path.abspath(args.out)
 
 
@@ -228,6 +362,11 @@ def main():
     if args.check_import:
         return
     fix_image_paths(os.path.dirname(os.path.abspath(args.model)))
+    separate_colour_images()
+    if args.obj_lambert and args.model.lower().endswith(".obj"):
+        obj_materials_as_lambert()
+    if args.no_clearcoat:
+        remove_clearcoat()
     # The file's own lights (glTF KHR_lights_punctual) stay; its cameras are not used.
     add_camera(args)
     for i, text in enumerate(args.sun):
