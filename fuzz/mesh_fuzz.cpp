@@ -1,7 +1,6 @@
-// libFuzzer target for the meshes read through assimp (apps/scene/assimp_loader.cpp
-// load_assimp_mesh): PLY, STL and OFF, with the checks rayo makes before assimp reads a file (the
-// PLY header's counts and body, a binary STL's triangle count against its size, an OFF file's
-// counts and face indices) and assimp's import itself. One fuzzer covers the three formats: the
+// libFuzzer target for rayo's readers of PLY, STL and OFF (apps/scene/polygon_file_loader.h
+// load_polygon_file: apps/scene/ply_reader.h, stl_reader.h, off_reader.h) and the triangulation
+// of their faces. One fuzzer covers the three formats: the
 // extension is picked from the content, as a user's file would be named: "ply" at the start is a
 // .ply, "solid" an ASCII .stl, "OFF" (COFF, NOFF, ...) in its first token an .off, anything else a
 // binary .stl (whose 80-byte header is free text). The mesh is then put through what the JSON
@@ -14,15 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "apps/scene/assimp_loader.h"
 #include "apps/scene/mesh_loader.h"
+#include "apps/scene/polygon_file_loader.h"
 #include "fuzz/fuzz_files.h"
 #include "fuzz/scene_invariants.h"
 
 namespace {
 
-// Whether the first token of `data` (after blanks) contains "OFF", as assimp's OFF importer and
-// rayo's check_off_file look for it.
+// Whether the first token of `data` (after blanks) contains "OFF", as the OFF reader looks for it.
 bool looks_like_off(const uint8_t* data, size_t size) {
     size_t at = 0;
     while (at < size && std::isspace(data[at])) ++at;
@@ -48,12 +46,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {
         rayo::MeshImportStats stats;
         rayo::TriangleMesh mesh =
-            rayo::load_assimp_mesh(path, materials, "fuzz.json#/objects/0/file", &stats);
-        rayo::fuzz::expect(!mesh.triangles.empty(), "assimp mesh accepted without triangles");
-        rayo::fuzz::check_mesh(mesh, materials.size(), "assimp mesh (as loaded)");
+            rayo::load_polygon_file(path, materials, "fuzz.json#/objects/0/file", &stats);
+        rayo::fuzz::expect(!mesh.triangles.empty(), "polygon file accepted without triangles");
+        rayo::fuzz::check_mesh(mesh, materials.size(), "polygon file (as loaded)");
         rayo::drop_degenerate_triangles(mesh);
         rayo::compute_vertex_normals(mesh);
-        rayo::fuzz::check_mesh(mesh, materials.size(), "assimp mesh (after normals)");
+        rayo::fuzz::check_mesh(mesh, materials.size(), "polygon file (after normals)");
     } catch (const rayo::InputError&) {
     }
     return 0;

@@ -8,7 +8,7 @@ packages=(
   libembree-dev libtbb-dev
   libopenimageio-dev openimageio-tools libopencolorio-dev
   libglm-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
-  libtinyobjloader-dev libtinygltf-dev libassimp-dev libdraco-dev
+  libtinyobjloader-dev libtinygltf-dev libdraco-dev
   libopenmpi-dev openmpi-bin
   gnuplot-nox
   pybind11-dev python3-dev python3-numpy python3-pytest

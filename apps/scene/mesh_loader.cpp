@@ -24,10 +24,10 @@
 #include <utility>
 #include <vector>
 
-#include "apps/scene/assimp_loader.h"
 #include "apps/scene/gltf_draco.h"
 #include "apps/scene/gltf_nodes.h"
 #include "apps/scene/input_file.h"
+#include "apps/scene/polygon_file_loader.h"
 #include "apps/scene/texture_image.h"
 #include "core/error.h"
 #include "core/math.h"
@@ -1526,7 +1526,7 @@ const char* const kMeshFileKinds = ".obj, .gltf, .glb, .ply, .stl or .off";
 
 bool is_mesh_file(const std::string& path) {
     const std::string ext = lower_extension(path);
-    return ext == ".obj" || ext == ".gltf" || ext == ".glb" || is_assimp_mesh_file(path);
+    return ext == ".obj" || ext == ".gltf" || ext == ".glb" || is_polygon_file(path);
 }
 
 ImportedMesh import_mesh_file(const std::string& path, std::vector<Material>& materials,
@@ -1539,8 +1539,8 @@ ImportedMesh import_mesh_file(const std::string& path, std::vector<Material>& ma
     } else if (ext == ".gltf" || ext == ".glb") {
         out.mesh =
             load_gltf(path, materials, where, &out.stats, options.access, options.gltf_nodes);
-    } else if (is_assimp_mesh_file(path)) {
-        out.mesh = load_assimp_mesh(path, materials, where, &out.stats, options.access);
+    } else if (is_polygon_file(path)) {
+        out.mesh = load_polygon_file(path, materials, where, &out.stats, options.access);
     } else {
         throw InputError(where, "unknown mesh file format '" + ext + "' of '" + path +
                                     "': expected " + kMeshFileKinds);

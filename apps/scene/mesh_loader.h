@@ -72,7 +72,7 @@ struct ImportedMesh {
     MeshImportStats stats;  // degenerate_triangles: the loader's and the transform's together
 };
 
-// The mesh file at `path` by its extension (load_obj, load_gltf, load_assimp_mesh), transformed,
+// The mesh file at `path` by its extension (load_obj, load_gltf, load_polygon_file), transformed,
 // with the degenerate triangles the transform makes dropped too. A dropped triangle is counted and
 // reported by a warning in stats.warnings ("where: dropped N degenerate ..."); an unknown
 // extension, a mesh left without triangles, or a transformed coordinate beyond the scene's
@@ -80,7 +80,7 @@ struct ImportedMesh {
 ImportedMesh import_mesh_file(const std::string& path, std::vector<Material>& materials,
                               const MeshImportOptions& options);
 
-// Helpers the mesh loaders share (mesh_loader.cpp, assimp_loader.cpp).
+// Helpers the mesh loaders share (mesh_loader.cpp, polygon_file_loader.cpp).
 std::string file_name(const std::string& path);  // the last path component
 // A parser's (possibly multi-line) report as one line, trailing blanks trimmed.
 std::string one_line(std::string text);

@@ -300,7 +300,8 @@ TEST_F(BadInputFiles, PolygonsAboveTheVertexLimitAreRefusedAtTheirFace) {
     const std::string reason =
         "polygon of 4097 vertices; the limit is 4096 (triangulation takes time quadratic";
     expect_refused({"info", "face4097.obj"}, "face4097.obj:4098", reason, "OBJ face");
-    expect_refused({"info", "face4097.ply"}, "face4097.ply", "face 0: " + reason, "PLY face");
+    expect_refused({"info", "face4097.ply"}, "face4097.ply:4107",
+                   "PLY element 'face' instance 0: " + reason, "PLY face");
     expect_refused({"info", "face4097.nff"}, "face4097.nff:10", reason, "NFF polygon");
     for (const char* ok : {"face4096.obj", "face4096.ply", "face4096.nff"}) {
         const WatchedResult r = run_watched({"info", ok}, kSecondsLimit);
