@@ -52,6 +52,63 @@ RadiosityField::RadiosityField(const Scene& scene, const std::vector<Material>& 
         return it->second;
     };
 
+    // The patches of one side of a mesh triangle cut k×k: the front wound as the triangle, the
+    // back reversed (its winding normal the negated one).
+    auto cut_triangle = [&](const TriangleMesh& mesh, size_t t, TriangleCut& cut, int side) {
+        const auto& tri = mesh.triangles[t];
+        const Vec3 a = mesh.positions[tri[0]], b = mesh.positions[tri[1]],
+                   c = mesh.positions[tri[2]];
+        const uint32_t k = cut.k;
+        cut.sides[side].patch = static_cast<uint32_t>(m_patches.size());
+        cut.sides[side].vertex = static_cast<uint32_t>(m_vertex_of.size());
+        const Material& material = materials[mesh.materials[t]];
+        const Vec3 cross = glm::cross(b - a, c - a);
+        const float length = glm::length(cross);
+        const Vec3 normal = length > 0.0f ? cross / length : Vec3(0.0f);  // 0: no patch area
+        const Vec3 facing = side == 0 ? normal : -normal;
+        auto point = [&](uint32_t i, uint32_t j) {
+            return a + (b - a) * (static_cast<float>(i) / k) +
+                   (c - a) * (static_cast<float>(j) / k);
+        };
+        for (uint32_t i = 0; i <= k; ++i) {
+            for (uint32_t j = 0; i + j <= k; ++j) {
+                m_vertex_of.push_back(vertex_id(point(i, j), facing));
+            }
+        }
+        auto add = [&](const Vec3& p, const Vec3& q, const Vec3& r) {
+            m_patches.push_back(side == 0 ? make_patch(p, q, r, material.emission, material.kd)
+                                          : make_patch(p, r, q, material.emission, material.kd));
+        };
+        for (uint32_t i = 0; i < k; ++i) {
+            for (uint32_t j = 0; i + j < k; ++j) {
+                add(point(i, j), point(i + 1, j), point(i, j + 1));
+                if (i + j + 1 < k) add(point(i + 1, j), point(i + 1, j + 1), point(i, j + 1));
+            }
+        }
+    };
+    // The patches of one side of an analytic shape's tessellation, likewise.
+    auto cut_shape = [&](ShapeCut& cut, const Material& material, int side) {
+        cut.sides[side].patch = static_cast<uint32_t>(m_patches.size());
+        cut.sides[side].vertex = static_cast<uint32_t>(m_vertex_of.size());
+        for (size_t v = 0; v < cut.mesh.positions.size(); ++v) {
+            const Vec3 n = side == 0 ? cut.mesh.normals[v] : -cut.mesh.normals[v];
+            m_vertex_of.push_back(vertex_id(cut.mesh.positions[v], n));
+        }
+        for (size_t n = 0; n < cut.mesh.triangles.size(); ++n) {
+            const auto& tri = cut.mesh.triangles[n];
+            const Vec3& p = cut.mesh.positions[tri[0]];
+            const Vec3& q = cut.mesh.positions[tri[1]];
+            const Vec3& r = cut.mesh.positions[tri[2]];
+            RadiosityPatch patch = side == 0 ? make_patch(p, q, r, material.emission, material.kd)
+                                             : make_patch(p, r, q, material.emission, material.kd);
+            // A little beyond the sampled chord error (its maximum may lie between the
+            // samples), and past the float rounding of the shape's intersection. The back's
+            // rays start as far inside (the chord of a saddle lies on both sides of it).
+            patch.lift = 1.25f * cut.mesh.bulge[n] + 1e-5f * max_abs_component(patch.vertices[0]);
+            m_patches.push_back(patch);
+        }
+    };
+
     m_cuts.resize(scene.meshes.size());
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const TriangleMesh& mesh = scene.meshes[m];
@@ -67,34 +124,8 @@ RadiosityField::RadiosityField(const Scene& scene, const std::vector<Material>& 
                 k = static_cast<uint32_t>(
                     std::clamp(std::ceil(longest / patch_size), 1.0f, 256.0f));
             }
-            TriangleCut& cut = m_cuts[m][t];
-            cut.k = k;
-            cut.first_patch = static_cast<uint32_t>(m_patches.size());
-            cut.first_vertex = static_cast<uint32_t>(m_vertex_of.size());
-            const Material& material = materials[mesh.materials[t]];
-            const Vec3 cross = glm::cross(b - a, c - a);
-            const float length = glm::length(cross);
-            const Vec3 normal = length > 0.0f ? cross / length : Vec3(0.0f);  // 0: no patch area
-            auto point = [&](uint32_t i, uint32_t j) {
-                return a + (b - a) * (static_cast<float>(i) / k) +
-                       (c - a) * (static_cast<float>(j) / k);
-            };
-            for (uint32_t i = 0; i <= k; ++i) {
-                for (uint32_t j = 0; i + j <= k; ++j) {
-                    m_vertex_of.push_back(vertex_id(point(i, j), normal));
-                }
-            }
-            for (uint32_t i = 0; i < k; ++i) {
-                for (uint32_t j = 0; i + j < k; ++j) {
-                    m_patches.push_back(make_patch(point(i, j), point(i + 1, j), point(i, j + 1),
-                                                   material.emission, material.kd));
-                    if (i + j + 1 < k) {
-                        m_patches.push_back(make_patch(point(i + 1, j), point(i + 1, j + 1),
-                                                       point(i, j + 1), material.emission,
-                                                       material.kd));
-                    }
-                }
-            }
+            m_cuts[m][t].k = k;
+            cut_triangle(mesh, t, m_cuts[m][t], 0);
         }
     }
 
@@ -112,25 +143,27 @@ RadiosityField::RadiosityField(const Scene& scene, const std::vector<Material>& 
             ShapeCut& cut = cuts[index];
             shapes[index].pieces(cut.pieces);
             tessellate(cut.pieces, options, cut.mesh);
-            cut.first_patch = static_cast<uint32_t>(m_patches.size());
-            cut.first_vertex = static_cast<uint32_t>(m_vertex_of.size());
-            for (size_t v = 0; v < cut.mesh.positions.size(); ++v) {
-                m_vertex_of.push_back(vertex_id(cut.mesh.positions[v], cut.mesh.normals[v]));
-            }
-            const Material& material = materials[shapes[index].material];
-            for (size_t n = 0; n < cut.mesh.triangles.size(); ++n) {
-                const auto& tri = cut.mesh.triangles[n];
-                RadiosityPatch patch =
-                    make_patch(cut.mesh.positions[tri[0]], cut.mesh.positions[tri[1]],
-                               cut.mesh.positions[tri[2]], material.emission, material.kd);
-                // A little beyond the sampled chord error (its maximum may lie between the
-                // samples), and past the float rounding of the shape's intersection.
-                patch.lift =
-                    1.25f * cut.mesh.bulge[n] + 1e-5f * max_abs_component(patch.vertices[0]);
-                m_patches.push_back(patch);
-            }
+            cut_shape(cut, materials[shapes[index].material], 0);
         }
     });
+
+    // The back sides of two-sided surfaces, after every front side.
+    const size_t fronts = m_patches.size();
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const TriangleMesh& mesh = scene.meshes[m];
+        for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+            if (materials[mesh.materials[t]].double_sided) cut_triangle(mesh, t, m_cuts[m][t], 1);
+        }
+    }
+    scene.shapes.for_each([&](const auto& shapes) {
+        using S = ShapeOf<decltype(shapes)>;
+        std::vector<ShapeCut>& cuts = m_shape_cuts[Shapes::index_of<S>()];
+        for (size_t index = 0; index < shapes.size(); ++index) {
+            const Material& material = materials[shapes[index].material];
+            if (material.double_sided) cut_shape(cuts[index], material, 1);
+        }
+    });
+    m_back_patches = m_patches.size() - fronts;
 }
 
 void RadiosityField::set_solution(const std::vector<DVec3>& radiosity) {
@@ -143,22 +176,25 @@ void RadiosityField::set_solution(const std::vector<DVec3>& radiosity) {
     for (size_t m = 0; m < m_cuts.size(); ++m) {
         for (const TriangleCut& cut : m_cuts[m]) {
             const uint32_t k = cut.k;
-            auto add = [&](uint32_t i, uint32_t j, uint32_t patch) {
-                const uint32_t v = m_vertex_of[cut.first_vertex + grid_index(k, i, j)];
-                sum[v] += DVec3(m_patch_radiance[patch]);
-                ++count[v];
-            };
-            for (uint32_t i = 0; i < k; ++i) {
-                for (uint32_t j = 0; i + j < k; ++j) {
-                    const uint32_t lower = cut.first_patch + patch_index(k, i, j, 0);
-                    add(i, j, lower);
-                    add(i + 1, j, lower);
-                    add(i, j + 1, lower);
-                    if (i + j + 1 < k) {
-                        const uint32_t upper = cut.first_patch + patch_index(k, i, j, 1);
-                        add(i + 1, j, upper);
-                        add(i + 1, j + 1, upper);
-                        add(i, j + 1, upper);
+            for (const Side& side : cut.sides) {
+                if (side.patch == kNoSide) continue;
+                auto add = [&](uint32_t i, uint32_t j, uint32_t patch) {
+                    const uint32_t v = m_vertex_of[side.vertex + grid_index(k, i, j)];
+                    sum[v] += DVec3(m_patch_radiance[patch]);
+                    ++count[v];
+                };
+                for (uint32_t i = 0; i < k; ++i) {
+                    for (uint32_t j = 0; i + j < k; ++j) {
+                        const uint32_t lower = side.patch + patch_index(k, i, j, 0);
+                        add(i, j, lower);
+                        add(i + 1, j, lower);
+                        add(i, j + 1, lower);
+                        if (i + j + 1 < k) {
+                            const uint32_t upper = side.patch + patch_index(k, i, j, 1);
+                            add(i + 1, j, upper);
+                            add(i + 1, j + 1, upper);
+                            add(i, j + 1, upper);
+                        }
                     }
                 }
             }
@@ -166,11 +202,14 @@ void RadiosityField::set_solution(const std::vector<DVec3>& radiosity) {
     }
     for (const std::vector<ShapeCut>& cuts : m_shape_cuts) {
         for (const ShapeCut& cut : cuts) {
-            for (size_t n = 0; n < cut.mesh.triangles.size(); ++n) {
-                for (const uint32_t corner : cut.mesh.triangles[n]) {
-                    const uint32_t v = m_vertex_of[cut.first_vertex + corner];
-                    sum[v] += DVec3(m_patch_radiance[cut.first_patch + n]);
-                    ++count[v];
+            for (const Side& side : cut.sides) {
+                if (side.patch == kNoSide) continue;
+                for (size_t n = 0; n < cut.mesh.triangles.size(); ++n) {
+                    for (const uint32_t corner : cut.mesh.triangles[n]) {
+                        const uint32_t v = m_vertex_of[side.vertex + corner];
+                        sum[v] += DVec3(m_patch_radiance[side.patch + n]);
+                        ++count[v];
+                    }
                 }
             }
         }
@@ -181,33 +220,38 @@ void RadiosityField::set_solution(const std::vector<DVec3>& radiosity) {
     }
 }
 
-bool RadiosityField::shape_reflected(const SurfaceHit& hit, Vec3& radiance) const {
+bool RadiosityField::shape_reflected(const SurfaceHit& hit, bool front, Vec3& radiance) const {
     if (hit.shape >= m_shape_cuts.size() || hit.primitive >= m_shape_cuts[hit.shape].size()) {
         return false;
     }
     const ShapeCut& cut = m_shape_cuts[hit.shape][hit.primitive];
+    const Side& side = cut.sides[front ? 0 : 1];
+    if (side.patch == kNoSide) return false;
     PiecePoint where;
     if (cut.mesh.triangles.empty() || !locate(cut.pieces, hit.position, where)) return false;
     const CellPoint cell = cell_point(cut.mesh, where);
     if (cell.triangle == TessellatedMesh::kNoTriangle) return false;
     if (m_flat) {
-        radiance = m_patch_radiance[cut.first_patch + cell.triangle];
+        radiance = m_patch_radiance[side.patch + cell.triangle];
         return true;
     }
     radiance = Vec3(0.0f);
     for (int c = 0; c < 3; ++c) {
         radiance +=
-            cell.weights[c] * m_vertex_radiance[m_vertex_of[cut.first_vertex + cell.vertices[c]]];
+            cell.weights[c] * m_vertex_radiance[m_vertex_of[side.vertex + cell.vertices[c]]];
     }
     return true;
 }
 
-bool RadiosityField::reflected(const SurfaceHit& hit, Vec3& radiance) const {
+bool RadiosityField::reflected(const SurfaceHit& hit, bool front, Vec3& radiance) const {
     // Instanced objects (hit.instance) are not patches: radiosity solves the scene's own
     // shapes and meshes only.
     if (m_patch_radiance.empty() || hit.instance != kNoInstance) return false;
-    if (hit.shape != kTriangleShape) return shape_reflected(hit, radiance);
+    if (hit.shape != kTriangleShape) return shape_reflected(hit, front, radiance);
     if (hit.mesh >= m_cuts.size()) return false;
+    const TriangleCut& cut = m_cuts[hit.mesh][hit.primitive];
+    const Side& side = cut.sides[front ? 0 : 1];
+    if (side.patch == kNoSide) return false;
     const TriangleMesh& mesh = m_scene.meshes[hit.mesh];
     const auto& tri = mesh.triangles[hit.primitive];
     const Vec3 a = mesh.positions[tri[0]];
@@ -217,7 +261,6 @@ bool RadiosityField::reflected(const SurfaceHit& hit, Vec3& radiance) const {
     const float d1w = glm::dot(e1, w), d2w = glm::dot(e2, w);
     const float den = d11 * d22 - d12 * d12;
     if (!(den > 0.0f)) return false;
-    const TriangleCut& cut = m_cuts[hit.mesh][hit.primitive];
     const float k = static_cast<float>(cut.k);
     // The hit in grid units, clamped into the triangle.
     const float s = std::clamp((d22 * d1w - d12 * d2w) / den, 0.0f, 1.0f) * k;
@@ -229,11 +272,11 @@ bool RadiosityField::reflected(const SurfaceHit& hit, Vec3& radiance) const {
     const float ft = std::clamp(t - static_cast<float>(j), 0.0f, 1.0f);
     const bool upper = fs + ft > 1.0f && i + j + 1 < cut.k;
     if (m_flat) {
-        radiance = m_patch_radiance[cut.first_patch + patch_index(cut.k, i, j, upper ? 1 : 0)];
+        radiance = m_patch_radiance[side.patch + patch_index(cut.k, i, j, upper ? 1 : 0)];
         return true;
     }
     auto at = [&](uint32_t ii, uint32_t jj) {
-        return m_vertex_radiance[m_vertex_of[cut.first_vertex + grid_index(cut.k, ii, jj)]];
+        return m_vertex_radiance[m_vertex_of[side.vertex + grid_index(cut.k, ii, jj)]];
     };
     if (upper) {
         radiance = at(i + 1, j + 1) * (fs + ft - 1.0f) + at(i + 1, j) * (1.0f - ft) +

@@ -75,7 +75,7 @@ WhittedIntegrator::ShadingPoint WhittedIntegrator::prepare(
     ShadingPoint p;
     m_surfaces.interact(ray, hit, p);
     p.medium = medium;
-    if (m_radiosity && p.entering) p.radiosity = m_radiosity->reflected(hit, p.radiosity_reflected);
+    if (m_radiosity) p.radiosity = m_radiosity->reflected(hit, p.entering, p.radiosity_reflected);
     return p;
 }
 

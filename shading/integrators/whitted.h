@@ -95,10 +95,10 @@ struct StreamLog {
 
 class WhittedIntegrator {
   public:
-    // With a radiosity solution (docs/radiosity.md), the front of a patch-covered surface takes
-    // the radiance its patches reflect in place of ka·Ia, and area lights (whose emitting
-    // surfaces are in the solve) give it no direct light; point and directional lights, which
-    // are not in the solve, still do.
+    // With a radiosity solution (docs/radiosity.md), each side of a patch-covered surface (the
+    // front, and the back of a two-sided material) takes the radiance its patches reflect in
+    // place of ka·Ia, and area lights (whose emitting surfaces are in the solve) give it no
+    // direct light; point and directional lights, which are not in the solve, still do.
     // `images` holds the image textures of the scene's materials (shading/image_texture.h);
     // without it materials shade with their constant factors.
     WhittedIntegrator(const Accel& accel, const ShadingScene& scene, const WhittedSettings& s,
