@@ -1,11 +1,7 @@
-// Tests of PLY, STL and OFF import by rayo's own readers (apps/scene/polygon_file_loader.h), on
-// files the tests write: an ASCII PLY with vertex colours and normals, a binary STL, an OFF; the
-// errors for truncated, out-of-range, empty and absurd files; and the dispatch of
-// import_mesh_file. Many cases were found by fuzz/mesh_fuzz.cpp when assimp read these formats
-// (it crashed, hung or reserved gigabytes on them); they stay as tests of the readers that
-// replaced it. Each format's own cases: tests/scene/ply_reader_test.cpp, stl_reader_test.cpp,
-// off_reader_test.cpp.
-#include "apps/scene/polygon_file_loader.h"
+// Tests of PLY, STL and OFF import through assimp (apps/scene/assimp_loader.h), on files the tests
+// write: an ASCII PLY with vertex colours and normals, a binary STL, an OFF; the errors for
+// truncated, out-of-range, empty and absurd files; and the dispatch of import_mesh_file.
+#include "apps/scene/assimp_loader.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -26,11 +22,11 @@ namespace {
 
 using rayo_test::expect_vec3;
 
-class PolygonFileLoader : public ::testing::Test {
+class AssimpLoader : public ::testing::Test {
   protected:
     void SetUp() override {
         m_dir = std::filesystem::temp_directory_path() /
-                ("rayo_polygon_file_test_" + std::to_string(::getpid()) + "_" +
+                ("rayo_assimp_test_" + std::to_string(::getpid()) + "_" +
                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
         std::filesystem::create_directories(m_dir);
     }
@@ -43,7 +39,7 @@ class PolygonFileLoader : public ::testing::Test {
     InputError error_of(const std::string& path) const {
         std::vector<Material> materials;
         try {
-            load_polygon_file(path, materials, "scene.json#/objects/0/file");
+            load_assimp_mesh(path, materials, "scene.json#/objects/0/file");
         } catch (const InputError& e) {
             return e;
         }
@@ -79,11 +75,11 @@ std::string binary_stl(const std::vector<std::array<float, 9>>& triangles) {
     return out;
 }
 
-TEST_F(PolygonFileLoader, AsciiPlyKeepsVertexColoursAndNormals) {
+TEST_F(AssimpLoader, AsciiPlyKeepsVertexColoursAndNormals) {
     const std::string path = write("quad.ply", kPlyHeader + kPlyVertices + "4 0 1 2 3\n");
     std::vector<Material> materials;
     MeshImportStats stats;
-    const TriangleMesh mesh = load_polygon_file(path, materials, "here", &stats);
+    const TriangleMesh mesh = load_assimp_mesh(path, materials, "here", &stats);
     ASSERT_EQ(mesh.triangle_count(), 2u);
     ASSERT_EQ(mesh.positions.size(), 4u);
     ASSERT_EQ(mesh.colors.size(), 4u);
@@ -104,19 +100,19 @@ TEST_F(PolygonFileLoader, AsciiPlyKeepsVertexColoursAndNormals) {
     }
 }
 
-TEST_F(PolygonFileLoader, BinaryStlJoinsCornersAndShadesFlat) {
+TEST_F(AssimpLoader, BinaryStlJoinsCornersAndShadesFlat) {
     // Two triangles of a quad: STL repeats the two shared corners.
     const std::string path =
         write("quad.stl", binary_stl({{0, 0, 0, 1, 0, 0, 1, 1, 0}, {0, 0, 0, 1, 1, 0, 0, 1, 0}}));
     std::vector<Material> materials;
-    const TriangleMesh mesh = load_polygon_file(path, materials, "here");
+    const TriangleMesh mesh = load_assimp_mesh(path, materials, "here");
     EXPECT_EQ(mesh.triangle_count(), 2u);
     EXPECT_EQ(mesh.positions.size(), 4u);
     EXPECT_TRUE(mesh.normals.empty());  // flat: the facet normals are dropped
     EXPECT_TRUE(mesh.colors.empty());
 }
 
-TEST_F(PolygonFileLoader, OffAndImportMeshFileDispatch) {
+TEST_F(AssimpLoader, OffAndImportMeshFileDispatch) {
     const std::string off = write("tri.OFF", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
     std::vector<Material> materials;
     MeshImportOptions options;
@@ -133,7 +129,7 @@ TEST_F(PolygonFileLoader, OffAndImportMeshFileDispatch) {
     EXPECT_TRUE(has_scaled);
 }
 
-TEST_F(PolygonFileLoader, TruncatedPlyNamesTheFileAndTheElement) {
+TEST_F(AssimpLoader, TruncatedPlyNamesTheFileAndTheElement) {
     // The header declares 4 vertices; the file ends after the second.
     const std::string path = write("cut.ply", kPlyHeader + kPlyVertices.substr(0, 28));
     const InputError e = error_of(path);
@@ -141,9 +137,9 @@ TEST_F(PolygonFileLoader, TruncatedPlyNamesTheFileAndTheElement) {
     EXPECT_NE(std::string(e.what()).find("PLY"), std::string::npos) << e.what();
 }
 
-TEST_F(PolygonFileLoader, AbsurdPlyCountsRefusedBeforeReading) {
+TEST_F(AssimpLoader, AbsurdPlyCountsRefusedBeforeReading) {
     // Two billion vertices declared in a file of a few hundred bytes: refused at the header's
-    // line (assimp, which read PLY for rayo before, reserved memory for every one of them first).
+    // line (assimp would reserve memory for every one of them first).
     std::string header = kPlyHeader;
     header.replace(header.find("element vertex 4"), 16, "element vertex 2000000000");
     const std::string path = write("huge.ply", header + kPlyVertices + "4 0 1 2 3\n");
@@ -152,18 +148,16 @@ TEST_F(PolygonFileLoader, AbsurdPlyCountsRefusedBeforeReading) {
     EXPECT_NE(e.message().find("declares 2000000000"), std::string::npos) << e.message();
 }
 
-TEST_F(PolygonFileLoader, FaceIndexOutOfRangeRefused) {
+TEST_F(AssimpLoader, FaceIndexOutOfRangeRefused) {
     const std::string path = write("far.ply", kPlyHeader + kPlyVertices + "4 0 1 2 7\n");
     const InputError e = error_of(path);
-    EXPECT_EQ(e.where(), path + ":21") << e.what();
-    EXPECT_EQ(e.message(),
-              "PLY element 'face' instance 0: vertex index 7 out of range (the file has 4 "
-              "vertices)");
+    EXPECT_EQ(e.where(), path) << e.what();
+    EXPECT_NE(e.message().find("vertex index 7 out of range"), std::string::npos) << e.message();
 }
 
-TEST_F(PolygonFileLoader, OffIndexOutOfRangeAndAbsurdCountsRefusedAtTheirLine) {
-    // assimp clamped the index 99999 to the last vertex (the same image as the valid triangle)
-    // and reserved 2^31 vertices before reading one (bad_alloc): both refused at path:line.
+TEST_F(AssimpLoader, OffIndexOutOfRangeAndAbsurdCountsRefusedAtTheirLine) {
+    // assimp clamps the index 99999 to the last vertex (the same image as the valid triangle)
+    // and reserves 2^31 vertices before reading one (bad_alloc): both refused at path:line.
     const std::string far = write("far.off",
                                   "OFF\n# a comment\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n"
                                   "3 0 1 99999\n");
@@ -187,14 +181,13 @@ TEST_F(PolygonFileLoader, OffIndexOutOfRangeAndAbsurdCountsRefusedAtTheirLine) {
         << count.message();
 }
 
-TEST_F(PolygonFileLoader, EmptyGarbageAndPointOnlyFilesRefused) {
+TEST_F(AssimpLoader, EmptyGarbageAndPointOnlyFilesRefused) {
     const std::string empty = write("empty.stl", "");
     EXPECT_NE(error_of(empty).message().find("empty STL"), std::string::npos);
     const std::string garbage = write("garbage.ply", "this is not a PLY file\n");
     const InputError g = error_of(garbage);
     EXPECT_EQ(g.where().rfind(garbage, 0), 0u) << g.what();
-    EXPECT_EQ(g.message(),
-              "not a PLY file: its first line must be 'ply', got 'this is not a PLY file'");
+    EXPECT_NE(g.message().find("malformed PLY"), std::string::npos) << g.message();
     // Triangles counted in the header, not present: a binary STL cut short.
     std::string cut = binary_stl({{0, 0, 0, 1, 0, 0, 0, 1, 0}});
     cut[80] = 9;  // nine triangles declared, one present
@@ -211,9 +204,9 @@ TEST_F(PolygonFileLoader, EmptyGarbageAndPointOnlyFilesRefused) {
 }
 
 // assimp's ASCII STL reader threw on these and leaked the mesh it was building (LeakSanitizer;
-// found by fuzz/mesh_fuzz.cpp): refused at their line. A solid without facets is read (the file's
-// other solids count); a facet of four vertices is refused (assimp skipped the fourth).
-TEST_F(PolygonFileLoader, MalformedAsciiStlRefusedAtItsLine) {
+// found by fuzz/mesh_fuzz.cpp): refused at their line before assimp reads them. A facet's fourth
+// vertex is skipped, as assimp skips it.
+TEST_F(AssimpLoader, MalformedAsciiStlRefusedAtItsLine) {
     const std::string facet =
         " facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n"
         "   vertex 0 1 0\n  endloop\n endfacet\n";
@@ -229,41 +222,42 @@ TEST_F(PolygonFileLoader, MalformedAsciiStlRefusedAtItsLine) {
     const InputError c = error_of(cut);
     EXPECT_EQ(c.where(), cut + ":5") << c.what();
     EXPECT_EQ(c.message(), "STL vertex: expected 3 numbers, got ''");
-    std::vector<Material> materials;
     const std::string empty =
         write("empty_solid.stl", "solid t\n" + facet + "endsolid t\n" + "solid u\nendsolid u\n");
-    EXPECT_EQ(load_polygon_file(empty, materials, "s.json").triangles.size(), 1u);
+    const InputError e = error_of(empty);
+    EXPECT_EQ(e.where(), empty + ":10") << e.what();
+    EXPECT_EQ(e.message(),
+              "STL solid without whole facets (0 vertices for 0 facet normals; "
+              "each facet has a normal and 3 vertices)");
     std::string lone = "solid t\n" + facet + " facet normal 0 0 1\nendsolid t\n";
     const std::string lone_normal = write("lone_normal.stl", lone);
-    const InputError l = error_of(lone_normal);
-    EXPECT_EQ(l.where(), lone_normal + ":10") << l.what();
-    EXPECT_EQ(l.message(), "STL: expected 'outer', got 'endsolid'");
-    // A NUL byte is not a blank: the word it is in is named, escaped.
+    EXPECT_NE(error_of(lone_normal).message().find("(3 vertices for 2 facet normals"),
+              std::string::npos);
+    // assimp's text ends at a NUL byte: the second facet has its normal, not its vertices.
     std::string nul = "solid t\n" + facet + facet + "endsolid t\n";
     nul[nul.rfind("outer loop")] = '\0';
-    EXPECT_EQ(error_of(write("nul.stl", nul)).message(), "STL: expected 'outer', got '\\x00uter'");
+    EXPECT_NE(error_of(write("nul.stl", nul)).message().find("(3 vertices for 2 facet normals"),
+              std::string::npos);
     std::string four = "solid t\n" + facet + "endsolid t\n";
     four.insert(four.find("  endloop"), "   vertex 9 9 9\n");
-    const std::string four_path = write("four.stl", four);
-    const InputError f = error_of(four_path);
-    EXPECT_EQ(f.where(), four_path + ":7") << f.what();
-    EXPECT_EQ(f.message(), "STL: a facet has 3 vertices, this one more");
+    std::vector<Material> materials;
+    EXPECT_EQ(load_assimp_mesh(write("four.stl", four), materials, "s.json").triangles.size(), 1u);
 }
 
 // assimp's ASCII PLY reader threw on a value that is not a number and leaked the mesh (found by
-// fuzz/mesh_fuzz.cpp): refused at its line, naming the element, instance and property.
-TEST_F(PolygonFileLoader, AsciiPlyValueThatIsNotANumberRefusedAtItsLine) {
+// fuzz/mesh_fuzz.cpp): refused at its line, naming the element and instance.
+TEST_F(AssimpLoader, AsciiPlyValueThatIsNotANumberRefusedAtItsLine) {
     std::string vertices = kPlyVertices;
     vertices.replace(vertices.find("1 0 0 0 0 1"), 11, "1 0 0 0'0 1");
     const std::string path = write("quote.ply", kPlyHeader + vertices + "4 0 1 2 3\n");
     const InputError e = error_of(path);
     EXPECT_EQ(e.where(), path + ":18") << e.what();
-    EXPECT_EQ(e.message(), "PLY element 'vertex' instance 1: property 'nx': '0'0' is not a number");
+    EXPECT_EQ(e.message(), "PLY element 'vertex' instance 1: '0'0' is not a number");
 }
 
 // A binary PLY whose header has lost its end_header line: assimp read on into the body and died
-// (SIGSEGV; found by fuzz/mesh_fuzz.cpp). Refused, as are the other damaged headers it found.
-TEST_F(PolygonFileLoader, PlyHeaderWithoutItsEndRefused) {
+// (SIGSEGV; found by fuzz/mesh_fuzz.cpp).
+TEST_F(AssimpLoader, PlyHeaderWithoutItsEndRefused) {
     const std::string path = write("endless.ply",
                                    "ply\nformat binary_little_endian 1.0\nelement vertex 4\n"
                                    "prod_header\n" +
@@ -307,10 +301,9 @@ TEST_F(PolygonFileLoader, PlyHeaderWithoutItsEndRefused) {
               "PLY header: end_header must end its line");
 }
 
-// Positions come from an element named "vertex" only: a misspelt name (found by
-// fuzz/mesh_fuzz.cpp, binary) ended in std::bad_alloc inside assimp after a reservation of
-// gigabytes.
-TEST_F(PolygonFileLoader, PlyWithoutAVertexElementOfPositionsRefused) {
+// assimp reads positions from an element named "vertex" only: a misspelt name (found by
+// fuzz/mesh_fuzz.cpp, binary) ended in std::bad_alloc after a reservation of gigabytes.
+TEST_F(AssimpLoader, PlyWithoutAVertexElementOfPositionsRefused) {
     const std::string expected =
         "PLY header: no element 'vertex' with properties x, y and z (the positions a mesh needs)";
     std::string misspelt = kPlyHeader + kPlyVertices + "4 0 1 2 3\n";
@@ -327,20 +320,20 @@ TEST_F(PolygonFileLoader, PlyWithoutAVertexElementOfPositionsRefused) {
 }
 
 // A face whose list count is 0 reached assimp's post-processing, which asserted (SIGABRT; found
-// by fuzz/mesh_fuzz.cpp); still refused, at its line.
-TEST_F(PolygonFileLoader, FaceWithoutVerticesRefused) {
+// by fuzz/mesh_fuzz.cpp).
+TEST_F(AssimpLoader, FaceWithoutVerticesRefused) {
     const std::string path =
         write("empty_face.ply", kPlyHeader.substr(0, kPlyHeader.find("element face 1")) +
                                     "element face 2\nproperty list uchar int vertex_indices\n"
                                     "end_header\n" +
                                     kPlyVertices + "3 0 1 2\n0\n");
     const InputError e = error_of(path);
-    EXPECT_EQ(e.where(), path + ":22") << e.what();
-    EXPECT_EQ(e.message(), "PLY element 'face' instance 1: a face of no vertices");
+    EXPECT_EQ(e.where(), path) << e.what();
+    EXPECT_EQ(e.message(), "face 1 has no vertices");
 }
 
 // An OFF face line cut short: assimp read on past it (SIGSEGV; found by fuzz/mesh_fuzz.cpp).
-TEST_F(PolygonFileLoader, OffFaceOrVertexCutShortRefusedAtItsLine) {
+TEST_F(AssimpLoader, OffFaceOrVertexCutShortRefusedAtItsLine) {
     const std::string face = write("face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3t 0 1\n");
     const InputError f = error_of(face);
     EXPECT_EQ(f.where(), face + ":6") << f.what();
@@ -348,20 +341,20 @@ TEST_F(PolygonFileLoader, OffFaceOrVertexCutShortRefusedAtItsLine) {
     const std::string vertex = write("vertex.off", "OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n");
     const InputError v = error_of(vertex);
     EXPECT_EQ(v.where(), vertex + ":4") << v.what();
-    EXPECT_EQ(v.message(), "vertex 1: expected 3 numbers (x y z), got 2");
+    EXPECT_EQ(v.message(), "vertex 1: expected 3 coordinates");
     // Coordinates are whole numbers: assimp read "1-5" otherwise (SIGSEGV).
     const std::string glued = write("glued.off", "OFF\n3 1 0\n0 0 0\n1-5 0 0\n0 1 0\n3 0 1 2\n");
-    EXPECT_EQ(error_of(glued).message(), "vertex 1: '1-5' is not a number");
+    EXPECT_EQ(error_of(glued).message(), "vertex 1: expected 3 coordinates");
     // The variants with colours (COFF) and the others are checked alike.
     const std::string coff = write("face.coff.off",
                                    "COFF\n3 1 0\n0 0 0 1 0 0 1\n1 0 0 0 1 0 1\n0 1 0 0 0 1 1\n"
                                    "3 0 1\n");
     const InputError c = error_of(coff);
     EXPECT_EQ(c.where(), coff + ":6") << c.what();
-    EXPECT_EQ(c.message(), "face 0: expected 3 vertex indices, got 2");
+    EXPECT_EQ(c.message(), "face 0: expected 3 vertex indices");
 }
 
-TEST_F(PolygonFileLoader, NonFiniteAndHugeCoordinatesRefused) {
+TEST_F(AssimpLoader, NonFiniteAndHugeCoordinatesRefused) {
     const std::string path =
         write("nan.ply", kPlyHeader +
                              "0 0 0 0 0 1 0 0 0\n1e30 0 0 0 0 1 0 0 0\n"
@@ -375,9 +368,7 @@ TEST_F(PolygonFileLoader, NonFiniteAndHugeCoordinatesRefused) {
                                "0 0 0 0 0 1 0 0 0\n1 nan 0 0 0 1 0 0 0\n"
                                "1 1 0 0 0 1 0 0 0\n0 1 0 0 0 1 0 0 0\n4 0 1 2 3\n");
     const InputError n = error_of(ny);
-    EXPECT_EQ(n.where(), ny + ":18") << n.what();
-    EXPECT_EQ(n.message().rfind("PLY element 'vertex' instance 1: coordinates must be", 0), 0u)
-        << n.message();
+    EXPECT_EQ(n.message().rfind("vertex 1: coordinates must be", 0), 0u) << n.message();
 }
 
 }  // namespace
