@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libembree-dev libtbb-dev
-  libopenimageio-dev openimageio-tools libopencolorio-dev
+  libopenimageio-dev openimageio-tools libopencolorio-dev libopenexr-dev libpng-dev
   libglm-dev libgtest-dev libbenchmark-dev nlohmann-json3-dev
   libtinyobjloader-dev libtinygltf-dev libdraco-dev
   libopenmpi-dev openmpi-bin

@@ -43,6 +43,7 @@
 #include "bench/lab/spd_suite.h"
 #include "core/error.h"
 #include "core/image/image_output.h"
+#include "core/image/image_writers.h"
 #include "core/image/interrupt_cleanup.h"
 #include "core/image/partial_render.h"
 #include "core/image/tile_stream.h"
@@ -248,6 +249,8 @@ FlagRule resolution_rule(const char* name) {
 const std::initializer_list<Choice<bool>> kGiViewChoices = {{"smooth", false}, {"patches", true}};
 const std::initializer_list<Choice<RangeMode>> kRangeChoices = {
     {"clamp", RangeMode::Clamp}, {"normalize", RangeMode::Normalize}};
+const std::initializer_list<Choice<ImageWriterChoice>> kImageWriterChoices = {
+    {"direct", ImageWriterChoice::Direct}, {"oiio", ImageWriterChoice::OpenImageIO}};
 
 // A value of a Words rule, once read_flag_value has passed it.
 template <typename E>
@@ -349,6 +352,7 @@ const RenderOption kRenderOptions[] = {
      "radiosity: write the unshot energy after every shot (CSV)", nullptr, text_rule(),
      [](RenderArgs& r, const FlagValue& v) { r.gi_log = v.text; }},
     {"--texture-cache"},
+    {"--texture-filter"},
     {"--display", OptionUse::Output, "D", "OCIO display and view for PNG/TIFF/JPEG",
      "config defaults", text_rule(),
      [](RenderArgs& r, const FlagValue& v) { r.output_options.display = v.text; }},
@@ -365,6 +369,13 @@ const RenderOption kRenderOptions[] = {
      "docs/performance.md)",
      "zip", words_rule(exr_compression_list),
      [](RenderArgs& r, const FlagValue& v) { r.output_options.exr_compression = v.text; }},
+    {"--image-writer", OptionUse::Output, "W",
+     "what writes PNG and EXR: libpng and OpenEXR directly, or OpenImageIO (the reference "
+     "writer, loaded as the image module: ~0.25 s more; docs/performance.md)",
+     "direct", words_rule(choice_words<kImageWriterChoices>),
+     [](RenderArgs& r, const FlagValue& v) {
+         r.output_options.writer = chosen(kImageWriterChoices, v);
+     }},
     {"--stream", OptionUse::Command, nullptr,
      "write the file as tiles finish, in memory that does not grow with the image (tiled EXR; "
      "PNG/TIFF/JPEG rows in order), or hold the whole image and write it at the end",
@@ -485,7 +496,13 @@ const CommandFlag<AccuracyArgs> kAccuracyFlags[] = {
 struct SuiteArgs {
     SuiteOptions options;
     bool write_nff = false;
+    bool size_given = false;
 };
+
+// --procedure: the SPD's testing procedure (bench/lab/spd_procedure.h).
+std::vector<std::string> suite_procedure_words() {
+    return {"spd"};
+}
 
 // What --scenes takes: names of the suite's scenes (bench/lab/spd_scenes.h), comma-separated.
 std::string suite_scenes_expectation() {
@@ -499,7 +516,21 @@ const CommandFlag<SuiteArgs> kSuiteFlags[] = {
      text_rule(), [](SuiteArgs& s, const FlagValue& v) { s.options.dir = v.text; }},
     {"--size", nullptr, "N", "SPD size of every scene", "3",
      integer_rule(kSuiteSizeRange.min, kSuiteSizeRange.max),
-     [](SuiteArgs& s, const FlagValue& v) { s.options.size = v.integer; }},
+     [](SuiteArgs& s, const FlagValue& v) {
+         s.options.size = v.integer;
+         s.size_given = true;
+     }},
+    {"--procedure", nullptr, nullptr,
+     "the SPD's testing procedure: every database at its default size, rays through the pixel "
+     "corners, depth 5, no adaptive cutoff; ray counts beside the SPD Readme's, exit 1 when one "
+     "is more than 10% off (docs/performance.md)",
+     nullptr, words_rule(suite_procedure_words),
+     [](SuiteArgs& s, const FlagValue&) { s.options.spd_procedure = true; }},
+    {"--repetitions", nullptr, "N",
+     "render each scene N times: times as median (min–max), and "
+     "suite.json's aggregates",
+     "1", integer_rule(kSuiteRepetitionsRange.min, kSuiteRepetitionsRange.max),
+     [](SuiteArgs& s, const FlagValue& v) { s.options.repetitions = v.integer; }},
     {"--width", nullptr, "W", "images of W×W pixels", "512",
      integer_rule(kSuiteWidthRange.min, kSuiteWidthRange.max),
      [](SuiteArgs& s, const FlagValue& v) { s.options.width = v.integer; }},
@@ -720,6 +751,8 @@ std::string aa_summary(const RenderSettings& s) {
     std::ostringstream text;
     if (s.aa == AntiAliasing::Adaptive) {
         text << "adaptive, threshold " << s.adaptive.threshold << ", depth " << s.adaptive.depth;
+    } else if (s.aa == AntiAliasing::Corners) {
+        text << "corners, the four of each pixel averaged";
     } else {
         text << "stratified, " << s.spp << " spp";
     }
@@ -972,13 +1005,14 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
     }
 }
 
-// The render threads first, then the image module's load beside the work (for the image written
-// at the end): the load holds the dynamic loader's lock, which creating a thread takes
-// (docs/performance.md "Fixed costs"). render_command does the two apart, with the journal's and
-// the stream's threads between them.
-void start_threads_then_image_module(int threads) {
+// The render threads first, then, when the image written at the end needs the image module
+// (core/image/image_writers.h), its load beside the work: the load holds the dynamic loader's
+// lock, which creating a thread takes (docs/performance.md "Fixed costs"). render_command does
+// the two apart, with the journal's and the stream's threads between them.
+void start_threads_then_image_module(int threads, const std::string& output,
+                                     const OutputOptions& options) {
     start_worker_threads(threads);
-    preload_image_library();
+    if (writer_needs_image_library(output, options.writer)) preload_image_library();
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -1048,7 +1082,7 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     OutputOptions options = args.output_options;
     options.metadata["rayo:scene"] = d.source;
     options.metadata["rayo:camera"] = view_text(cam);
-    if (d.settings.aa == AntiAliasing::Adaptive) {
+    if (d.settings.aa != AntiAliasing::Stratified) {
         options.metadata["rayo:antialiasing"] = aa_summary(d.settings);
     } else {
         options.metadata["rayo:spp"] = std::to_string(d.settings.spp);
@@ -1129,9 +1163,11 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         }
         std::unique_ptr<TileSink> recorder;
         if (partial) recorder = partial->recording_sink(*sink);
-        // The image module loads (~0.3 s, docs/performance.md "Fixed costs") while the render
-        // runs; a streamed output's writer thread has started it already.
-        if (writes_image && !stream) preload_image_library();
+        // The image module, when the output's writer needs it (TIFF, JPEG, --image-writer oiio;
+        // core/image/image_writers.h), loads (~0.3 s, docs/performance.md "Fixed costs") while
+        // the render runs; a streamed output's writer thread has started it already.
+        if (writes_image && !stream && writer_needs_image_library(output, options.writer))
+            preload_image_library();
         result = render_scene(d, threads, progress, recorder ? recorder.get() : sink, ranks,
                               partial ? &missing : nullptr);
     }
@@ -1190,9 +1226,10 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         const double mrays =
             result.render_seconds > 0 ? c.total_rays() / result.render_seconds / 1e6 : 0.0;
         out << "rayo: " << output << " " << cam.width << "x" << cam.height << " "
-            << (d.settings.aa == AntiAliasing::Adaptive ? "adaptive"
-                : result.progressive                    ? progressive_summary(*result.progressive)
-                                                        : std::to_string(d.settings.spp) + "spp")
+            << (d.settings.aa == AntiAliasing::Adaptive  ? "adaptive"
+                : d.settings.aa == AntiAliasing::Corners ? "corners"
+                : result.progressive                     ? progressive_summary(*result.progressive)
+                                                         : std::to_string(d.settings.spp) + "spp")
             << (d.settings.integrator.index() == 0
                     ? std::string()
                     : std::string(" ") + integrator_name(d.settings.integrator))
@@ -1279,13 +1316,13 @@ int run_texture(const std::vector<std::string>& args, std::ostream& out) {
                          ")");
     }
     check_film_size(width, height, "--size");
-    start_threads_then_image_module(0);
+    const std::string path = t.output ? *t.output : *name + ".png";
+    OutputOptions options;
+    start_threads_then_image_module(0, path, options);
     Texture texture = make_texture(*name);
     if (t.scale) texture.scale = *t.scale;
     texture.seed = seed;
     const Film film = texture_image(texture, width, height);
-    const std::string path = t.output ? *t.output : *name + ".png";
-    OutputOptions options;
     options.metadata["rayo:texture"] = *name;
     options.metadata["rayo:texture_scale"] = std::to_string(texture.scale);
     options.metadata["rayo:texture_seed"] = std::to_string(seed);
@@ -1336,7 +1373,12 @@ PreviewArgs parse_preview_args(const std::vector<std::string>& args) {
 int run_preview(const std::vector<std::string>& arg_list, std::ostream& out, std::ostream& err) {
     const PreviewArgs args = parse_preview_args(arg_list);
     const RenderArgs& r = args.render;
-    start_threads_then_image_module(r.threads.value_or(0));
+    const std::string output =
+        r.output ? *r.output
+                 : (r.scene_path ? std::filesystem::path(*r.scene_path).stem().string()
+                                 : std::string("default")) +
+                       "-preview.png";
+    start_threads_then_image_module(r.threads.value_or(0), output, r.output_options);
     const auto total_start = std::chrono::steady_clock::now();
     SceneDescription d =
         r.scene_path ? load_scene_file(*r.scene_path, r.load_options) : make_default_scene();
@@ -1345,11 +1387,6 @@ int run_preview(const std::vector<std::string>& arg_list, std::ostream& out, std
         for (const std::string& w : d.warnings) err << "rayo: warning: " << w << "\n";
     }
     apply_overrides(r, d);
-    const std::string output =
-        r.output ? *r.output
-                 : (r.scene_path ? std::filesystem::path(*r.scene_path).stem().string()
-                                 : std::string("default")) +
-                       "-preview.png";
     check_output(output, r.output_options);  // before the work, as for render
 
     PreviewOptions options;
@@ -1456,6 +1493,11 @@ int run_bench_suite(const std::vector<std::string>& args, std::ostream& out) {
     const SuiteOptions& options = parsed.options;
     const bool write_nff = parsed.write_nff;
     if (write_nff && options.dir.empty()) throw UsageError("bench suite: --write-nff needs -o DIR");
+    if (options.spd_procedure && parsed.size_given) {
+        throw UsageError(
+            "bench suite: --size with --procedure spd: the procedure renders each database at "
+            "its default size");
+    }
     if (write_nff) {
         write_spd_nff_files(options, out);
         return 0;
@@ -1468,6 +1510,13 @@ int run_bench_suite(const std::vector<std::string>& args, std::ostream& out) {
         out << "wrote suite.csv, suite.json, suite.md, suite.gp and suite.png in " << options.dir
             << "\n";
     }
+    if (!options.spd_procedure) return 0;
+    const std::vector<std::string> failures = spd_count_failures(rows);
+    for (const std::string& failure : failures) {
+        out << "rayo bench suite --procedure spd: FAILED: " << failure << "\n";
+    }
+    if (!failures.empty()) return 1;
+    out << "rayo bench suite --procedure spd: every ray count within 10% of the SPD Readme's\n";
     return 0;
 }
 

@@ -20,6 +20,7 @@
 
 #include "core/error.h"
 #include "core/image/atomic_file.h"
+#include "core/image/image_writers.h"
 #include "core/image/interrupt_cleanup.h"
 #include "core/image/output_encoding.h"
 #include "core/image_library.h"
@@ -37,8 +38,7 @@ bool file_exists(const char* path) {
 // `path`. On failure the temporary is removed and InputError(path, "cannot write: ...") thrown;
 // while it exists, SIGINT/SIGTERM remove it (core/image/interrupt_cleanup.h).
 void write_atomically(const std::string& path, const ImageFileSpec& spec, PixelType type,
-                      const void* pixels) {
-    const ImageLibrary& library = image_library();
+                      const void* pixels, ImageWriterChoice choice) {
     const std::string tmp = temporary_path_for(path);
     const TemporaryFileGuard guard(tmp);
     bool ok = false;
@@ -46,7 +46,7 @@ void write_atomically(const std::string& path, const ImageFileSpec& spec, PixelT
     int error = 0;
     {
         errno = 0;
-        std::unique_ptr<ImageWriter> out = library.create_writer(tmp, spec, reason);
+        std::unique_ptr<ImageWriter> out = create_image_writer(tmp, spec, choice, reason);
         if (!out) {
             error = errno;
         } else {
@@ -97,7 +97,7 @@ bool is_exr_compression(const std::string& name) {
 
 void check_output(const std::string& path, const OutputOptions& options) {
     const ImageFormat format = image_format_of(path);
-    check_image_library();
+    if (writer_needs_image_library(path, options.writer)) check_image_library();
     if (format != ImageFormat::Exr) {
         std::string display = options.display, view = options.view;
         resolve_display_view(load_ocio_config(), path, display, view);
@@ -146,7 +146,7 @@ void write_image(const Film& film, const std::string& path, const OutputOptions&
                                    "x" + std::to_string(film.height()) + ")");
     const ImageFileSpec spec = image_spec(format, film.width(), film.height(), options);
     if (format == ImageFormat::Exr) {
-        write_atomically(path, spec, PixelType::Float, film.rgba().data());
+        write_atomically(path, spec, PixelType::Float, film.rgba().data(), options.writer);
         return;
     }
     // Display formats: the view over a copy of the film (normalized first when asked), then
@@ -161,7 +161,7 @@ void write_image(const Film& film, const std::string& path, const OutputOptions&
     encoder.apply_view(rgba.data(), film.width(), film.height());
     std::vector<unsigned char> bytes(pixels * encoder.bytes_per_pixel());
     encoder.quantise(rgba.data(), pixels, bytes.data());
-    write_atomically(path, spec, encoder.type(), bytes.data());
+    write_atomically(path, spec, encoder.type(), bytes.data(), options.writer);
 }
 
 }  // namespace rayo

@@ -15,6 +15,11 @@ enum class RangeMode {
     Normalize,  // the whole image divided by its per-channel maximum before the view (seed 000)
 };
 
+// Which library writes PNG and EXR files (--image-writer; core/image/image_writers.h): libpng and
+// OpenEXR directly, or OpenImageIO through the image module, the reference writer. TIFF and JPEG
+// are always OpenImageIO's.
+enum class ImageWriterChoice { Direct, OpenImageIO };
+
 struct OutputOptions {
     std::string display;  // empty: the config's default display
     std::string view;     // empty: the display's default view
@@ -24,6 +29,7 @@ struct OutputOptions {
     // "compression" attribute. zip: lossless and fast enough to overlap the render
     // (docs/performance.md "EXR output").
     std::string exr_compression = "zip";
+    ImageWriterChoice writer = ImageWriterChoice::Direct;
     std::map<std::string, std::string> metadata;  // e.g. "rayo:scene", "rayo:spp", "Software"
 };
 

@@ -16,6 +16,7 @@
 
 #include "core/error.h"
 #include "core/image/atomic_file.h"
+#include "core/image/image_writers.h"
 #include "core/image/interrupt_cleanup.h"
 #include "core/image/output_encoding.h"
 #include "core/image_library.h"
@@ -48,8 +49,13 @@ class FileWriter {
     // The temporary file is created here, so that an unwritable output fails before the render;
     // the image module's writer is opened on the writer thread, so that the render does not wait
     // for the module to load (docs/performance.md "Fixed costs"): tiles queue meanwhile.
-    FileWriter(const std::string& path, const ImageFileSpec& spec, WriteBatch write)
-        : m_path(path), m_tmp(temporary_path_for(path)), m_guard(m_tmp), m_write(std::move(write)) {
+    FileWriter(const std::string& path, const ImageFileSpec& spec, ImageWriterChoice choice,
+               WriteBatch write)
+        : m_path(path),
+          m_tmp(temporary_path_for(path)),
+          m_guard(m_tmp),
+          m_choice(choice),
+          m_write(std::move(write)) {
         errno = 0;
         if (std::FILE* file = std::fopen(m_tmp.c_str(), "wb")) {
             std::fclose(file);
@@ -140,14 +146,14 @@ class FileWriter {
         }
     }
 
-    // The module's writer on the temporary file; a failure is kept for push() and finish().
+    // The writer on the temporary file (core/image/image_writers.h: libpng's or OpenEXR's, or the
+    // image module's, loaded here when needed); a failure is kept for push() and finish().
     void open_writer(const ImageFileSpec& spec) {
         std::string failure;
         try {
-            const ImageLibrary& library = image_library();
             errno = 0;
             std::string reason;
-            m_out = library.create_writer(m_tmp, spec, reason);
+            m_out = create_image_writer(m_tmp, spec, m_choice, reason);
             if (!m_out) failure = write_failure(reason, errno, m_tmp, m_path);
         } catch (const std::exception& e) {
             failure = e.what();
@@ -167,6 +173,7 @@ class FileWriter {
 
     std::string m_path, m_tmp;
     TemporaryFileGuard m_guard;
+    ImageWriterChoice m_choice;
     WriteBatch m_write;
     std::unique_ptr<ImageWriter> m_out;
     std::mutex m_mutex;
@@ -229,8 +236,8 @@ bool write_tile_runs(ImageWriter& out, std::vector<TilePixels>& tiles, std::vect
 // A tiled EXR: each tile is copied and queued as it arrives.
 class ExrTileStream : public TileStream {
   public:
-    ExrTileStream(const std::string& path, const ImageFileSpec& spec)
-        : m_writer(path, spec, [this](ImageWriter& out, std::vector<TilePixels>& tiles) {
+    ExrTileStream(const std::string& path, const ImageFileSpec& spec, ImageWriterChoice choice)
+        : m_writer(path, spec, choice, [this](ImageWriter& out, std::vector<TilePixels>& tiles) {
               return write_tile_runs(out, tiles, m_run);
           }) {}
 
@@ -259,7 +266,7 @@ class BandStream : public TileStream {
                const OutputOptions& options)
         : m_encoder(format, path, options),
           m_path(path),
-          m_writer(path, spec,
+          m_writer(path, spec, options.writer,
                    [type = m_encoder.type()](ImageWriter& out, std::vector<Band>& bands) {
                        for (const Band& band : bands) {
                            if (!out.write_scanlines(band.y0, band.y0 + band.height, type,
@@ -373,7 +380,7 @@ std::unique_ptr<TileStream> TileStream::open(const std::string& path, int width,
         spec.tile_size = tile_size;
         // Tiles are written as they finish: OpenEXR must not buffer out-of-order tiles.
         spec.add("openexr:lineOrder", "randomY");
-        return std::make_unique<ExrTileStream>(path, spec);
+        return std::make_unique<ExrTileStream>(path, spec, options.writer);
     }
     return std::make_unique<BandStream>(path, format, spec, options);
 }
