@@ -14,8 +14,16 @@
 // kind: 0 camera, 1 shadow from camera hits, 2 shadow from secondary hits, 3 reflected and
 // refracted (RAYO_STREAM_COHERENT=1: all with the COHERENT flag, for comparison). Counters: Mrays/s
 // (rays per CPU second).
+// Kinds 4–6 are a diffuse-path frame: the rays the path integrator traces ray by ray
+// (PathIntegrator::record_rays) on the built-in Cornell box (bench/lab/convergence_scene.h) at
+// 256×256 and 4 spp (RAYO_PATH_SIZE=N, RAYO_PATH_SPP=S), one thread: 4 camera, 5 bounce (the
+// rays the scattering functions sample), 6 shadow (next-event estimation). The path integrator
+// traces single rays, so its own entry is RayoSingle; the stream entries group the rays 64 at a
+// time in the order they were traced (consecutive vertices of a few paths: what a 64-path
+// wavefront would hand Embree, no more coherent), to say whether streams would pay.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -25,49 +33,66 @@
 #include "apps/scene/renderer.h"
 #include "apps/scene/sphere_method_choice.h"
 #include "bench/bench_main.h"
+#include "bench/lab/convergence_scene.h"
 #include "bench/lab/spd_scenes.h"
 #include "core/accel.h"
 #include "core/camera.h"
 #include "core/embree_ray.h"
 #include "core/render.h"
+#include "shading/integrators/path.h"
 #include "shading/integrators/whitted.h"
 
 namespace rayo {
 namespace {
 
+// A positive integer from the environment variable `name` (a multiple of `multiple`), or
+// `fallback` when it is not set.
+int environment_count(const char* name, int fallback, int multiple) {
+    const char* env = std::getenv(name);
+    const int n = env ? std::atoi(env) : fallback;
+    if (n < multiple || n % multiple != 0) {
+        std::fprintf(stderr, "%s=%s: expected a positive multiple of %d\n", name, env, multiple);
+        std::exit(2);
+    }
+    return n;
+}
 // The recorded frame's width and height: 512, or RAYO_STREAM_SIZE (a multiple of 8).
 int frame_size() {
-    static const int size = [] {
-        const char* env = std::getenv("RAYO_STREAM_SIZE");
-        const int n = env ? std::atoi(env) : 512;
-        if (n < 8 || n % 8 != 0) {
-            std::fprintf(stderr, "RAYO_STREAM_SIZE=%s: expected a multiple of 8, at least 8\n",
-                         env);
-            std::exit(2);
-        }
-        return n;
-    }();
+    static const int size = environment_count("RAYO_STREAM_SIZE", 512, 8);
     return size;
 }
-const char* const kKindNames[] = {"camera", "shadow-camera", "shadow-secondary", "secondary"};
+const char* const kKindNames[] = {"camera",      "shadow-camera", "shadow-secondary", "secondary",
+                                  "path-camera", "path-bounce",   "path-shadow"};
+constexpr int kPathFirstKind = 4;
 
 struct Recording {
     SceneDescription description;
     std::unique_ptr<Accel> accel;
-    StreamLog log;
-    std::vector<size_t> offsets[4];  // first ray of each call, per kind
+    StreamLog
+        log;  // kinds 0–3 (Whitted); kinds 4–6 (path) use log.camera, secondary, shadow_camera
+    std::vector<size_t> offsets[7];  // first ray of each call, per kind
 
     const StreamLog::Calls& calls(int kind) const {
-        const StreamLog::Calls* all[] = {&log.camera, &log.shadow_camera, &log.shadow_secondary,
-                                         &log.secondary};
+        const StreamLog::Calls* all[] = {
+            &log.camera, &log.shadow_camera, &log.shadow_secondary, &log.secondary,
+            &log.camera, &log.secondary,     &log.shadow_camera};
         return *all[kind];
     }
-    static bool closest_hit(int kind) { return kind == 0 || kind == 3; }
+    void index_calls(int first_kind, int last_kind) {
+        for (int kind = first_kind; kind <= last_kind; ++kind) {
+            size_t offset = 0;
+            for (const int n : calls(kind).sizes) {
+                offsets[kind].push_back(offset);
+                offset += static_cast<size_t>(n);
+            }
+        }
+    }
+    static bool closest_hit(int kind) { return kind == 0 || kind == 3 || kind == 4 || kind == 5; }
     // The renderer's flags; RAYO_STREAM_COHERENT=1 replays every kind with the COHERENT flag.
     static Accel::Coherence coherence(int kind) {
         static const bool all_coherent = std::getenv("RAYO_STREAM_COHERENT") != nullptr;
-        return kind <= 1 || all_coherent ? Accel::Coherence::Coherent
-                                         : Accel::Coherence::Incoherent;
+        return kind <= 1 || kind == kPathFirstKind || all_coherent ? Accel::Coherence::Coherent
+                                                                   : Accel::Coherence::Incoherent;
     }
 };
 
@@ -112,24 +137,66 @@ const Recording& recording() {
                 integrator.radiance_coherent(rays, samples, n, radiance, counters);
             }
         }
-        for (int kind = 0; kind < 4; ++kind) {
-            size_t offset = 0;
-            for (const int n : rec.calls(kind).sizes) {
-                rec.offsets[kind].push_back(offset);
-                offset += static_cast<size_t>(n);
-            }
-        }
+        rec.index_calls(0, kPathFirstKind - 1);
         return rec;
     }();
     return r;
+}
+
+// The diffuse-path frame (kinds 4–6): the path integrator's rays on the Cornell box, one thread,
+// in calls of 64 in the order traced.
+const Recording& path_recording() {
+    static const Recording r = [] {
+        Recording rec;
+        rec.description = convergence_cornell_box();
+        const int frame = environment_count("RAYO_PATH_SIZE", 256, 8);
+        const auto spp = static_cast<uint32_t>(environment_count("RAYO_PATH_SPP", 4, 1));
+        rec.description.scene.camera.width = frame;
+        rec.description.scene.camera.height = frame;
+        const Camera camera = Camera::create(rec.description.scene.camera);
+        rec.accel = std::make_unique<Accel>(rec.description.scene, AccelOptions{});
+        const IntegratorContext context{*rec.accel, rec.description.shading};
+        PathIntegrator integrator(context, PathSettings{});
+        PathRayLog log;
+        integrator.record_rays(&log);
+        RayCounters counters;
+        for (int y = 0; y < frame; ++y) {
+            for (int x = 0; x < frame; ++x) {
+                for (uint32_t s = 0; s < spp; ++s) {
+                    Ray ray;
+                    PixelSample sample;
+                    if (pixel_ray(camera, x, y, s, spp, ray, sample)) {
+                        integrator.radiance(ray, sample, counters);
+                    }
+                }
+            }
+        }
+        const auto to_calls = [](const std::vector<Ray>& rays, StreamLog::Calls& calls) {
+            for (size_t first = 0; first < rays.size(); first += Accel::kCoherentBatch) {
+                const size_t n =
+                    std::min(rays.size() - first, static_cast<size_t>(Accel::kCoherentBatch));
+                calls.add(rays.data() + first, static_cast<int>(n));
+            }
+        };
+        to_calls(log.camera, rec.log.camera);
+        to_calls(log.bounce, rec.log.secondary);
+        to_calls(log.shadow, rec.log.shadow_camera);
+        rec.index_calls(kPathFirstKind, kPathFirstKind + 2);
+        return rec;
+    }();
+    return r;
+}
+
+const Recording& recording(int kind) {
+    return kind < kPathFirstKind ? recording() : path_recording();
 }
 
 // Replays every recorded call of `kind` through `trace_call(rays, n)` (which returns how many
 // rays hit or are occluded), on one thread.
 template <typename TraceCall>
 void replay(benchmark::State& state, TraceCall trace_call) {
-    const Recording& rec = recording();
     const int kind = static_cast<int>(state.range(0));
+    const Recording& rec = recording(kind);
     const StreamLog::Calls& calls = rec.calls(kind);
     size_t hits = 0;
     for (auto _ : state) {
@@ -147,7 +214,7 @@ void replay(benchmark::State& state, TraceCall trace_call) {
 }
 
 void Rayo(benchmark::State& state) {
-    const Accel& accel = *recording().accel;
+    const Accel& accel = *recording(static_cast<int>(state.range(0))).accel;
     replay(state, [&](const Ray* rays, int n, int kind) {
         size_t count = 0;
         bool result[Accel::kCoherentBatch];
@@ -163,7 +230,7 @@ void Rayo(benchmark::State& state) {
 }
 
 void RayoSingle(benchmark::State& state) {
-    const Accel& accel = *recording().accel;
+    const Accel& accel = *recording(static_cast<int>(state.range(0))).accel;
     replay(state, [&](const Ray* rays, int n, int kind) {
         size_t count = 0;
         for (int i = 0; i < n; ++i) {
@@ -176,7 +243,7 @@ void RayoSingle(benchmark::State& state) {
 }
 
 void RawStream(benchmark::State& state) {
-    const RTCScene scene = recording().accel->rtc_scene();
+    const RTCScene scene = recording(static_cast<int>(state.range(0))).accel->rtc_scene();
     replay(state, [&](const Ray* rays, int n, int kind) {
         RTCIntersectContext context = stream_context(Recording::coherence(kind));
         size_t count = 0;
@@ -197,7 +264,7 @@ void RawStream(benchmark::State& state) {
 
 // Packets of 16 in the call's order (SOA), inactive lanes masked off.
 void RawPacket(benchmark::State& state) {
-    const RTCScene scene = recording().accel->rtc_scene();
+    const RTCScene scene = recording(static_cast<int>(state.range(0))).accel->rtc_scene();
     replay(state, [&](const Ray* rays, int n, int kind) {
         RTCIntersectContext context = stream_context(Recording::coherence(kind));
         size_t count = 0;
@@ -239,7 +306,7 @@ void RawPacket(benchmark::State& state) {
 }
 
 void RawSingle(benchmark::State& state) {
-    const RTCScene scene = recording().accel->rtc_scene();
+    const RTCScene scene = recording(static_cast<int>(state.range(0))).accel->rtc_scene();
     replay(state, [&](const Ray* rays, int n, int kind) {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
@@ -260,7 +327,7 @@ void RawSingle(benchmark::State& state) {
 }
 
 void kinds(benchmark::internal::Benchmark* b) {
-    b->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
+    b->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
 }
 BENCHMARK(Rayo)->Apply(kinds);
 BENCHMARK(RayoSingle)->Apply(kinds);

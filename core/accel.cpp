@@ -167,7 +167,9 @@ bool Accel::finish_hit(const Ray& ray, const RTCRayHit& rayhit, SurfaceHit& hit)
     // instance: its binding carries the group's hit to world space (core/instance_binding.h).
     const unsigned instance = rayhit.hit.instID[0];
     const unsigned geometry = instance != RTC_INVALID_GEOMETRY_ID ? instance : rayhit.hit.geomID;
-    hit.instance = kNoInstance;
+    // A record the caller reuses (the path integrator's vertex, a stream's batch) starts fresh:
+    // a binding fills only what its shape has (a sphere no vertex colour or tangent).
+    hit = SurfaceHit{};
     m_bindings[geometry]->surface(ray, rayhit, hit);
     hit.geometry = geometry;
     return true;

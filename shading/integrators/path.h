@@ -12,6 +12,7 @@
 // is a backdrop, not a light (docs/path-tracing.md). Registered in
 // shading/integrators/integrator.h; its settings are its fields().
 #include <optional>
+#include <vector>
 
 #include "core/accel.h"
 #include "core/sampler.h"
@@ -63,6 +64,14 @@ struct PathSettings {
     std::optional<FieldProblem> problem() const { return std::nullopt; }
 };
 
+// The rays of a path-traced frame by kind, in the order they were traced: what
+// bench/stream_kinds_bench.cpp replays through rayo's Accel and through raw Embree. One thread.
+struct PathRayLog {
+    std::vector<Ray> camera;  // closest hit
+    std::vector<Ray> bounce;  // closest hit: the rays a scattering function sampled
+    std::vector<Ray> shadow;  // occlusion: next-event estimation toward a light sample
+};
+
 class PathIntegrator {
   public:
     PathIntegrator(const IntegratorContext& context, const PathSettings& s)
@@ -76,17 +85,32 @@ class PathIntegrator {
     // camera sample's own dimensions of the sampler (a fixed block per bounce), so the image is
     // the same for any thread count, tile size or rank count.
     Vec3 radiance(const Ray& ray, const PixelSample& sample, RayCounters& counters) const;
+    // The same for a batch of camera rays, identical values path by path, traced as a wavefront:
+    // each round's rays of all live paths as one Embree stream, then their shadow rays as
+    // streams (docs/path-tracing.md, "Streams").
     void radiance_coherent(const Ray* rays, const PixelSample* samples, int count, Vec3* out,
-                           RayCounters& counters) const {
-        for (int i = 0; i < count; ++i) out[i] = radiance(rays[i], samples[i], counters);
-    }
+                           RayCounters& counters) const;
+
+    // Records every ray radiance() traces into `log` (null: stops); benchmarks only.
+    void record_rays(PathRayLog* log) { m_log = log; }
 
   private:
     struct Vertex;
-    // Next-event estimation at a vertex: one sample of every light, with a shadow ray, weighted
-    // against BSDF sampling where both can find the light.
-    Vec3 direct_light(const Vertex& v, const PixelSample& sample, uint32_t dimension,
-                      RayCounters& counters) const;
+    struct PathState;
+    struct LightSampleAt;
+    // A path's steps from one ray to the next (radiance() and the wavefront take the same):
+    // arrive: what the ray found (its medium, the environment or an emitter it sees, the
+    // vertex's scattering function); false when the path ends there.
+    bool arrive(PathState& path, bool found, RayCounters& counters) const;
+    // Next-event estimation, one light at a time: a sample of light `index` whose shadow ray is
+    // to be traced (false: it gives nothing), then, once the ray is unoccluded, its light added
+    // to `sum`, weighted against BSDF sampling where both can find the light.
+    bool sample_light_at(const PathState& path, size_t index, LightSampleAt& at,
+                         RayCounters& counters) const;
+    void add_light(const PathState& path, const LightSampleAt& at, Vec3& sum) const;
+    // scatter: the scattering function's sample, Russian roulette and the next ray; false when
+    // the path ends there.
+    bool scatter(PathState& path, RayCounters& counters) const;
 
     // What a path that leaves the scene along `direction` after a vertex at `from` gains (before
     // its throughput): the environment, weighted against light sampling unless the last bounce
@@ -98,6 +122,7 @@ class PathIntegrator {
     const ImageTextures* m_images;
     SurfaceShading m_surfaces;
     PathSettings m_settings;
+    PathRayLog* m_log = nullptr;
 };
 
 }  // namespace rayo

@@ -75,6 +75,21 @@ TEST(StreamPaths, EveryExampleSceneGivesTheSameBitsAsSingleRays) {
     }
 }
 
+// The path integrator's wavefront (PathIntegrator::radiance_coherent: every round of bounce
+// rays and their shadow rays as streams) against its single rays, on every example scene.
+TEST(StreamPaths, PathTracingGivesTheSameBitsAsSingleRays) {
+    for (const std::string& name : example_scenes()) {
+        SceneDescription d = load_scene_file(std::string(RAYO_SCENES_DIR) + "/" + name);
+        const float aspect = static_cast<float>(d.scene.camera.height) /
+                             static_cast<float>(std::max(1, d.scene.camera.width));
+        d.scene.camera.width = 37;
+        d.scene.camera.height = std::max(1, static_cast<int>(37.0f * aspect));
+        d.settings.spp = 2;
+        d.settings.integrator = PathSettings{};
+        expect_streams_match_single_rays(d, name + " (path)", false);
+    }
+}
+
 // Deep ray trees: the default scene's glass and mirror spheres at every depth limit, with
 // filtered shadows (the shadow rays through glass go on ray by ray) and without, also through
 // the wavefront of stream_secondary: its analytic spheres run rayo's own kernels, the same
