@@ -55,7 +55,7 @@ bool parse_integer(std::string_view word, long long& out) {
     return r.ec == std::errc() && r.ptr == end;
 }
 
-std::string quoted(std::string_view word) {
+std::string quote_word(std::string_view word) {
     constexpr size_t kShown = 48;
     std::string out = "'";
     for (size_t i = 0; i < word.size() && i < kShown; ++i) {

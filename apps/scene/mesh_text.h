@@ -47,6 +47,6 @@ bool parse_integer(std::string_view word, long long& out);
 
 // `word` for a message: in single quotes, bytes outside printable ASCII as \xNN, and cut at 48
 // characters ("...") so that a megabyte of junk does not become the message.
-std::string quoted(std::string_view word);
+std::string quote_word(std::string_view word);
 
 }  // namespace rayo

@@ -89,7 +89,7 @@ PolygonMesh read_off(std::string_view bytes, const std::string& path) {
         const bool higher = k < prefix.size() && (prefix[k] == '4' || prefix[k] == 'n');
         if (off != std::string_view::npos && higher) {
             throw InputError(lines.place(path), "OFF variant " +
-                                                    quoted(keyword.substr(0, off + 3)) +
+                                                    quote_word(keyword.substr(0, off + 3)) +
                                                     " (4-D or n-D vertices) is not read; "
                                                     "expected OFF, COFF, NOFF, CNOFF, STOFF, ...");
         }
@@ -99,7 +99,7 @@ PolygonMesh read_off(std::string_view bytes, const std::string& path) {
             throw InputError(lines.place(path),
                              "not an OFF file: expected the keyword OFF (or COFF, NOFF, CNOFF, "
                              "STOFF, ...) first, got " +
-                                 quoted(keyword));
+                                 quote_word(keyword));
         }
     }
     // The counts: after the keyword on its line, in the same word too ("OFF1167483648"), or on
@@ -124,8 +124,8 @@ PolygonMesh read_off(std::string_view bytes, const std::string& path) {
         !parse_integer(face_word, faces)) {
         throw InputError(counts_place,
                          "expected the vertex and face counts, got " +
-                             quoted(std::string(vertex_word) +
-                                    (counts.size() > 1 ? " " + std::string(face_word) : "")));
+                             quote_word(std::string(vertex_word) +
+                                        (counts.size() > 1 ? " " + std::string(face_word) : "")));
     }
     // A vertex line takes 6 bytes at least ("0 0 0\n"), a face line 4 ("1 0\n"): counts the rest
     // of the file cannot hold are refused before anything is reserved (2^31 vertices in a small
@@ -163,7 +163,7 @@ PolygonMesh read_off(std::string_view bytes, const std::string& path) {
         for (size_t k = 0; k < w.size(); ++k) {
             if (!parse_number(w[k], value[k])) {
                 throw InputError(lines.place(path),
-                                 vertex + ": " + quoted(w[k]) + " is not a number");
+                                 vertex + ": " + quote_word(w[k]) + " is not a number");
             }
         }
         const Vec3 position(value[0], value[1], value[2]);
@@ -221,8 +221,8 @@ PolygonMesh read_off(std::string_view bytes, const std::string& path) {
         for (long long c = 1; c <= corners; ++c) {
             long long index = -1;
             if (!parse_integer(w[c], index)) {
-                throw InputError(lines.place(path),
-                                 face + ": vertex index " + quoted(w[c]) + " is not an integer");
+                throw InputError(lines.place(path), face + ": vertex index " + quote_word(w[c]) +
+                                                        " is not an integer");
             }
             // assimp clamped an index past the vertices to the last one (issue 30, item 10).
             if (index < 0 || index >= vertices) {
@@ -246,7 +246,7 @@ PolygonMesh read_off(std::string_view bytes, const std::string& path) {
             double value = 0;
             if (!parse_number(w[k], value)) {
                 throw InputError(lines.place(path),
-                                 face + ": its colour " + quoted(w[k]) + " is not a number");
+                                 face + ": its colour " + quote_word(w[k]) + " is not a number");
             }
         }
     }

@@ -137,7 +137,7 @@ PlyHeader read_header(std::string_view bytes, const std::string& path) {
     split_words(line, words);
     if (words.size() != 1 || words[0] != "ply") {
         throw InputError(line_place(path, 1),
-                         "not a PLY file: its first line must be 'ply', got " + quoted(line));
+                         "not a PLY file: its first line must be 'ply', got " + quote_word(line));
     }
     // A file cut inside its header, or one whose end line is damaged ("propeend_header"): said
     // so, not reported as whatever the first body bytes look like.
@@ -165,7 +165,7 @@ PlyHeader read_header(std::string_view bytes, const std::string& path) {
         const bool element = keyword == "element", format = keyword == "format";
         const bool property = keyword == "property";
         if (!element && !format && !property) {
-            throw InputError(place, "PLY header line starts with " + quoted(keyword) +
+            throw InputError(place, "PLY header line starts with " + quote_word(keyword) +
                                         ": expected format, comment, obj_info, element, property "
                                         "or end_header");
         }
@@ -176,7 +176,7 @@ PlyHeader read_header(std::string_view bytes, const std::string& path) {
                                          : format ? "format TYPE VERSION"
                                          : list   ? "property list COUNT_TYPE ITEM_TYPE NAME"
                                                   : "property TYPE NAME") +
-                                        ", got " + quoted(line));
+                                        ", got " + quote_word(line));
         }
         if (format) {
             if (has_format) throw InputError(place, "PLY header: a second format line");
@@ -188,7 +188,7 @@ PlyHeader read_header(std::string_view bytes, const std::string& path) {
             } else if (words[1] == "binary_big_endian") {
                 header.format = PlyFormat::BinaryBigEndian;
             } else {
-                throw InputError(place, "PLY format " + quoted(words[1]) +
+                throw InputError(place, "PLY format " + quote_word(words[1]) +
                                             ": expected ascii, binary_little_endian or "
                                             "binary_big_endian");
             }
@@ -198,13 +198,14 @@ PlyHeader read_header(std::string_view bytes, const std::string& path) {
             e.line = number;
             // A name is a word ("2147483648face 2" is not an element of 2^31 instances).
             if (!(std::isalpha(static_cast<unsigned char>(e.name[0])) || e.name[0] == '_')) {
-                throw InputError(place, "PLY element name " + quoted(e.name) + ": expected a word");
+                throw InputError(place,
+                                 "PLY element name " + quote_word(e.name) + ": expected a word");
             }
             long long count = -1;
             if (words[2].find_first_not_of("0123456789") != std::string_view::npos ||
                 words[2].size() > 18 || !parse_integer(words[2], count)) {
                 throw InputError(place, "PLY element '" + e.name + "': expected a count, got " +
-                                            quoted(words[2]));
+                                            quote_word(words[2]));
             }
             e.count = static_cast<uint64_t>(count);
             for (const PlyElement& other : header.elements) {
@@ -228,7 +229,7 @@ PlyHeader read_header(std::string_view bytes, const std::string& path) {
             for (const std::string_view t : {count_type, type}) {
                 PlyType parsed;
                 if (!ply_type_named(t, parsed)) {
-                    throw InputError(place, "PLY property type " + quoted(t) +
+                    throw InputError(place, "PLY property type " + quote_word(t) +
                                                 " is not a PLY type (char, uchar, short, ushort, "
                                                 "int, uint, float, double, or int8 ... float64)");
                 }
@@ -237,7 +238,7 @@ PlyHeader read_header(std::string_view bytes, const std::string& path) {
             ply_type_named(count_type, p.count_type);
             if (list && !is_integer(p.count_type)) {
                 throw InputError(place, "PLY list '" + p.name + "': its count type " +
-                                            quoted(count_type) +
+                                            quote_word(count_type) +
                                             " must be an integer type (uchar, ushort, uint, ...)");
             }
             PlyElement& e = header.elements.back();
@@ -381,7 +382,7 @@ class PlyBody {
     void end() {
         if (!m_ascii || m_word == m_words.size()) return;
         fail(std::to_string(m_words.size() - m_word) + " values after its last property (" +
-             quoted(m_words[m_word]) + "...): the header declares fewer");
+             quote_word(m_words[m_word]) + "...): the header declares fewer");
     }
 
     double scalar(const PlyProperty& p) {
@@ -407,7 +408,7 @@ class PlyBody {
         const std::string_view word = next_word("list '" + p.name + "'");
         long long count = -1;
         if (!parse_integer(word, count) || count < 0) {
-            fail("list count " + quoted(word) + " is not a count (an integer >= 0)");
+            fail("list count " + quote_word(word) + " is not a count (an integer >= 0)");
         }
         const auto items = static_cast<uint64_t>(count);
         if (items > m_words.size() - m_word) {
@@ -423,7 +424,7 @@ class PlyBody {
         const std::string_view word = m_words[m_word++];
         long long value = 0;
         if (!parse_integer(word, value)) {
-            fail("list '" + p.name + "': " + quoted(word) + " is not an integer");
+            fail("list '" + p.name + "': " + quote_word(word) + " is not an integer");
         }
         return value;
     }
@@ -503,14 +504,14 @@ class PlyBody {
         if (is_integer(type)) {
             long long value = 0;
             if (!parse_integer(word, value) || value < min_of(type) || value > max_of(type)) {
-                fail(what + ": " + quoted(word) + " is not a " + name_of(type) +
+                fail(what + ": " + quote_word(word) + " is not a " + name_of(type) +
                      " (an integer from " + std::to_string(min_of(type)) + " to " +
                      std::to_string(max_of(type)) + ")");
             }
             return static_cast<double>(value);
         }
         double value = 0;
-        if (!parse_number(word, value)) fail(what + ": " + quoted(word) + " is not a number");
+        if (!parse_number(word, value)) fail(what + ": " + quote_word(word) + " is not a number");
         return value;
     }
 

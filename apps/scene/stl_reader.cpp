@@ -42,7 +42,7 @@ class StlWords {
             fail(std::string("the file ends where '") + keyword + "' was expected (truncated?)");
         }
         if (word != keyword) {
-            fail(std::string("expected '") + keyword + "', got " + quoted(word));
+            fail(std::string("expected '") + keyword + "', got " + quote_word(word));
         }
     }
 
@@ -54,7 +54,7 @@ class StlWords {
             const bool got = next(word);
             if (!got || !parse_number(word, value)) {
                 fail(std::string("STL ") + what + ": expected 3 numbers, got " +
-                     (got ? quoted(word) : "''"));
+                     (got ? quote_word(word) : "''"));
             }
         }
         return Vec3(xyz[0], xyz[1], xyz[2]);
@@ -81,7 +81,7 @@ void read_ascii(std::string_view text, const std::string& path, PolygonMesh& mes
         if (word.substr(0, 5) != "solid") {
             words.fail(std::string(any_solid ? "expected 'solid' or the end of the file"
                                              : "expected 'solid'") +
-                       ", got " + quoted(word));
+                       ", got " + quote_word(word));
         }
         any_solid = true;
         words.skip_line();  // the solid's name
@@ -94,7 +94,7 @@ void read_ascii(std::string_view text, const std::string& path, PolygonMesh& mes
                 break;
             }
             if (word != "facet") {
-                words.fail("expected 'facet' or 'endsolid', got " + quoted(word));
+                words.fail("expected 'facet' or 'endsolid', got " + quote_word(word));
             }
             words.expect("normal");
             words.numbers("normal");  // dropped: the corners are joined instead
@@ -116,7 +116,7 @@ void read_ascii(std::string_view text, const std::string& path, PolygonMesh& mes
                 words.fail("the file ends where 'endloop' was expected (truncated?)");
             }
             if (word == "vertex") words.fail("a facet has 3 vertices, this one more");
-            if (word != "endloop") words.fail("expected 'endloop', got " + quoted(word));
+            if (word != "endloop") words.fail("expected 'endloop', got " + quote_word(word));
             words.expect("endfacet");
             mesh.end_face();
         }
