@@ -13,7 +13,6 @@
 #include "apps/scene/nff_loader.h"
 #include "bench/lab/teapot_patches.h"
 #include "core/error.h"
-#include "core/sampling.h"
 
 namespace rayo {
 namespace {
@@ -113,22 +112,22 @@ std::string balls(int n) {
 }
 
 // ---- gears -----------------------------------------------------------------------------------
-// n × n × n gears of 36 teeth, layer k's tops at z = 1 − k/n, 0.1 thick. A unit gear's teeth
-// reach radius 0.995 (tips 3.8° wide) from a root circle of radius 0.9 (gaps 4° wide at the
+// n × n × n gears of 36 teeth, layer k's tops at z = 1 − k/n, min(0.1, 1/(2n)) thick. A unit gear's
+// teeth reach radius 0.995 (tips 3.8° wide) from a root circle of radius 0.9 (gaps 4° wide at the
 // root); neighbours 1.9 apart mesh, the odd ones (i + j + k odd) turned half a tooth. The grid
 // is scaled to span [−1, 1]²: s = 2 / (1.9n + 0.1). Each gear: its top face (counter-clockwise
 // from above), the 144 side quads, its bottom face (reversed).
-D3 gear_colour(uint32_t gear, bool& glass) {
-    // Not the SPD's random colours: hashed ones, of full value and a hue and saturation each.
-    const double hue = sample_uniform(gear, 0, 0, 0, 0x6ea25);
-    const double saturation = 0.2 + 0.6 * sample_uniform(gear, 0, 0, 1, 0x6ea25);
-    glass = gear % 4 == 0;
-    D3 rgb;
-    for (int c = 0; c < 3; ++c) {
-        const double h = std::fmod(hue + c / 3.0, 1.0);
-        const double ramp = std::clamp(std::abs(6.0 * h - 3.0) - 1.0, 0.0, 1.0);
-        rgb[c] = 1.0 - saturation * (1.0 - ramp);
-    }
+// The SPD's gear colours and glass (gears.c, version 3): a fraction of a sum of the gear's grid
+// coordinates per channel, scaled so that the largest channel is 1; glass when
+// (4i + 2j + k) mod 5 = 0 (i, j, k along x, y, z).
+D3 gear_colour(int i, int j, int k, bool& glass) {
+    const auto fraction = [](double v) { return v - std::floor(v); };
+    D3 rgb(0.01 + fraction((3 * i + 2 * j + k + 1) * 5.0 / 7.0),
+           0.01 + fraction((3 * j + 2 * k + i + 1) * 3.0 / 7.0),
+           0.01 + fraction((3 * k + 2 * i + j + 1) * 2.0 / 7.0));
+    const double largest = std::max({rgb[0], rgb[1], rgb[2]});
+    for (int c = 0; c < 3; ++c) rgb[c] /= largest;
+    glass = (4 * i + 2 * j + k) % 5 == 0;
     return rgb;
 }
 
@@ -141,12 +140,13 @@ std::string gears(int n) {
     w.material(D3(1, 0.85, 0.7), 0.3, 0.6, 3.0827, 0, 0);
     w.polygon(square(D3(0, 0, 0), D3(1, 0, 0), D3(0, 1, 0), 2));
     const double scale = 2.0 / (1.9 * n + 0.1);
-    uint32_t gear = 0;
+    // 0.1 thick, thinner above size 5 so that the layers do not overlap (the SPD's rule).
+    const double thickness = std::min(0.1, 1.0 / (2.0 * n));
     for (int k = 0; k < n; ++k) {
         for (int j = 0; j < n; ++j) {
-            for (int i = 0; i < n; ++i, ++gear) {
+            for (int i = 0; i < n; ++i) {
                 bool glass = false;
-                const D3 rgb = gear_colour(gear, glass);
+                const D3 rgb = gear_colour(i, j, k, glass);
                 if (glass) {
                     w.material(rgb, 0.2, 0, 100000, 0.8, 1.1);
                 } else {
@@ -166,7 +166,7 @@ std::string gears(int n) {
                                              cy + scale * radius * std::sin(radians(angle)), top);
                     }
                 }
-                const D3 down(0, 0, -0.1);
+                const D3 down(0, 0, -thickness);
                 w.polygon(outline);
                 const size_t m = outline.size();
                 for (size_t v = 0; v < m; ++v) {
@@ -184,14 +184,36 @@ std::string gears(int n) {
 }
 
 // ---- mount: a fractal mountain with four glass spheres --------------------------------------
-// Heights on a (2^n + 1)² grid over [−1, 1]², the corners at 0, by midpoint displacement: at
-// level l (cells 2^(1−l) wide) each cell's centre and edge midpoints take the mean of their
-// cell's corners (edges: of their two ends) plus a displacement of ±0.6·(2^(1−l))^0.8 (the SPD's
-// fractal dimension 2.2). The displacement is a hash of the point's place on the finest grid
-// (not the SPD's random numbers), so a point has the same height at every size. Triangles are
-// written cell by cell in the SPD's order: the quadrants of each cell counter-clockwise from the
-// lower left, two triangles per cell split along its rising diagonal.
-constexpr int kMountMaxLevel = 12;
+// Heights on a (2^n + 1)² grid over [−1, 1]², the corners at 0, by midpoint displacement
+// (Carpenter's method as the SPD's mount.c extends it to square grids): at each level every
+// cell's edge midpoints take the mean of the edge's ends and its centre the mean of its four
+// corners, plus a Gaussian displacement of rise = (half the cell's side) · √(r² − 1), r =
+// 2 / 2^(1/(D − 1)) for the fractal dimension D = 2.2 (√2 · rise at the centre). The Gaussian
+// numbers are the SPD's, so the mountain is the SPD's: a polar Box–Muller pair from the linear
+// congruential sequence x' = (28411 + 8121·x) mod 134456 (Numerical Recipes' GASDEV with its
+// short generator; the SPD's lib_gauss_rand) seeded with 21 + the SPD's original grid hash
+// ((x << (23 − n)) + (y << (15 − n)) + (x << (7 − n))) & 0xffff, which the SPD asks timing tests
+// to keep. (Above size 7 its shifts go negative, undefined in C: here they shift right.)
+// Triangles are written cell by cell in the SPD's order: the quadrants of each cell
+// counter-clockwise from the lower left, two triangles per cell split along its rising diagonal.
+double spd_gauss(long seed) {
+    constexpr long kModulus = 134456, kMultiplier = 8121, kIncrement = 28411;
+    long second = seed;
+    double v1 = 0, r = 0;
+    do {
+        const long first = (kIncrement + second * kMultiplier) % kModulus;
+        second = (kIncrement + first * kMultiplier) % kModulus;
+        v1 = first * 2.0 / kModulus - 1.0;
+        const double v2 = second * 2.0 / kModulus - 1.0;
+        r = v1 * v1 + v2 * v2;
+    } while (r >= 1.0);
+    return v1 * std::sqrt(-2.0 * std::log(r) / r);
+}
+
+long spd_mount_hash(long x, long y, int n) {
+    const auto shift = [](unsigned long v, int by) { return by >= 0 ? v << by : v >> -by; };
+    return long((shift(x, 23 - n) + shift(y, 15 - n) + shift(x, 7 - n)) & 0xffff);
+}
 
 std::string mount(int n) {
     NffWriter w(D3(-1.6, 1.6, 1.7), D3(0, 0, 0), D3(0, 0, 1), 0.01);
@@ -209,29 +231,32 @@ std::string mount(int n) {
     }
     w.material(D3(0.5, 0.45, 0.35), 1, 0, 100000, 0, 0);
     const int cells = 1 << n;
-    const int stride = 1 << (kMountMaxLevel - n);  // grid step in finest-grid units
     std::vector<double> z(size_t(cells + 1) * (cells + 1), 0.0);
     auto at = [&](int x, int y) -> double& { return z[size_t(y) * (cells + 1) + x]; };
-    auto displaced = [&](int x, int y, double mean, int level) {
-        const double u = sample_uniform(uint32_t(x * stride), uint32_t(y * stride), 0, 0, 0x3e0);
-        return mean + 0.6 * std::pow(std::ldexp(1.0, 1 - level), 0.8) * (2.0 * u - 1.0);
+    const double ratio = 2.0 / std::exp(std::log(2.0) / (2.2 - 1.0));
+    const double roughness = std::sqrt(ratio * ratio - 1.0);
+    double rise = 0;  // this level's
+    auto displaced = [&](int x, int y, double mean, double factor = 1.0) {
+        return mean + factor * rise * spd_gauss(21 + spd_mount_hash(x, y, n));
     };
     for (int level = 1; level <= n; ++level) {
         const int half = cells >> level, step = 2 * half;
+        rise = half * 2.0 / cells * roughness;
         for (int y = 0; y < cells; y += step) {
             for (int x = 0; x < cells; x += step) {
                 const double a = at(x, y), b = at(x + step, y), c = at(x + step, y + step),
                              d = at(x, y + step);
-                at(x + half, y + half) = displaced(x + half, y + half, (a + b + c + d) / 4, level);
+                at(x + half, y + half) =
+                    displaced(x + half, y + half, (a + b + c + d) / 4.0, 1.4142136);
                 // Each edge midpoint once: the lower and left edges here, the others at the grid's
                 // upper and right borders.
-                at(x + half, y) = displaced(x + half, y, (a + b) / 2, level);
-                at(x, y + half) = displaced(x, y + half, (a + d) / 2, level);
+                at(x + half, y) = displaced(x + half, y, (a + b) / 2.0);
+                at(x, y + half) = displaced(x, y + half, (d + a) / 2.0);
                 if (x + step == cells) {
-                    at(cells, y + half) = displaced(cells, y + half, (b + c) / 2, level);
+                    at(cells, y + half) = displaced(cells, y + half, (b + c) / 2.0);
                 }
                 if (y + step == cells) {
-                    at(x + half, cells) = displaced(x + half, cells, (d + c) / 2, level);
+                    at(x + half, cells) = displaced(x + half, cells, (c + d) / 2.0);
                 }
             }
         }
@@ -482,14 +507,15 @@ std::string tree(int n) {
 struct Generator {
     std::string (*make)(int);
     int max_size;
+    int default_size;  // the SPD generator's size_factor
 };
 
 // Largest sizes: about a million primitives or fewer.
 const std::map<std::string, Generator>& generators() {
     static const std::map<std::string, Generator> table = {
-        {"balls", {balls, 6}},  {"gears", {gears, 12}},   {"mount", {mount, 9}},
-        {"rings", {rings, 20}}, {"teapot", {teapot, 64}}, {"tetra", {tetra, 9}},
-        {"tree", {tree, 18}},
+        {"balls", {balls, 6, 4}},  {"gears", {gears, 12, 4}},    {"mount", {mount, 9, 6}},
+        {"rings", {rings, 20, 7}}, {"teapot", {teapot, 64, 12}}, {"tetra", {tetra, 9, 6}},
+        {"tree", {tree, 18, 11}},
     };
     return table;
 }
@@ -514,6 +540,10 @@ const std::vector<std::string>& spd_scene_names() {
 
 int spd_max_size(const std::string& name) {
     return generator(name).max_size;
+}
+
+int spd_default_size(const std::string& name) {
+    return generator(name).default_size;
 }
 
 std::string spd_nff(const std::string& name, int size) {

@@ -11,10 +11,9 @@
 //           that close in a point lose one triangle per column); a checkered floor of n² squares
 //   tetra   4^n triangles (a Sierpinski tetrahedron of 4^(n−1) tetrahedra)
 //   tree    2^(n+1) − 1 cones with a sphere at each top (a branching tree); a floor square
-// Two scenes use the SPD's random numbers, which are not reproduced: mount's heights come from
-// a hash of the grid position, gears' colours and glassiness from a hash of the gear's number
-// (docs/performance.md, "The SPD suite"). Everything else matches the SPD's files to their six
-// printed digits.
+// Everything matches the SPD's files to their six printed digits, gears' colours and glass and
+// mount's heights (the SPD's own hash and Gaussian numbers) included (docs/performance.md, "The
+// SPD suite").
 #include <string>
 #include <vector>
 
@@ -27,6 +26,10 @@ const std::vector<std::string>& spd_scene_names();
 
 // The largest size accepted for `name`, so that no scene exceeds about a million primitives.
 int spd_max_size(const std::string& name);
+
+// The SPD's default size of `name` (its generator's size_factor; the Readme's "Database
+// Analysis" table is for these): balls 4, gears 4, mount 6, rings 7, teapot 12, tetra 6, tree 11.
+int spd_default_size(const std::string& name);
 
 // The NFF text of scene `name` at `size` (1..spd_max_size). Throws InputError naming the scene
 // for an unknown name or a size out of range.

@@ -82,13 +82,19 @@ TEST(SpdScenes, TheSphereflakeChildrenTouchTheirParent) {
     }
 }
 
-TEST(SpdScenes, MountHeightsDoNotDependOnTheSize) {
-    // The displacement is a hash of the point's place, so size 2 refines size 1's grid.
-    const std::string one = spd_nff("mount", 1), two = spd_nff("mount", 2);
-    EXPECT_NE(one.find("\n0 0 "), std::string::npos);
-    const size_t at = one.find("\n0 0 ");
-    const std::string centre = one.substr(at, one.find('\n', at + 1) - at);
-    EXPECT_NE(two.find(centre), std::string::npos) << centre;
+TEST(SpdScenes, GearsAndMountAreTheSpds) {
+    // The SPD's own files (its generators, version 3.14) print these lines: gears 2's first
+    // gear is glass (Ks 0, T 0.8) in the colour of its grid place, its second opaque white;
+    // mount 3's first triangle has the heights of the SPD's hash and Gaussian numbers.
+    const std::string gears = spd_nff("gears", 2);
+    EXPECT_NE(gears.find("f 1 0.605523 0.408284 0.2 0 100000 0.8 1.1\n"), std::string::npos);
+    EXPECT_NE(gears.find("f 0.802761 1 1 0.2 0 100000 0.8 1.1\n"), std::string::npos);
+    EXPECT_NE(gears.find("f 1 1 1 1 0 100000 0 0\n"), std::string::npos);
+    const std::string mount = spd_nff("mount", 3);
+    EXPECT_NE(mount.find("p 3\n-1 -1 0\n-0.75 -1 -0.296434\n-0.75 -0.75 -0.0309146\n"),
+              std::string::npos);
+    EXPECT_NE(mount.find("p 3\n-0.75 -1 -0.296434\n-0.5 -1 -0.466589\n-0.5 -0.75 -0.0307771\n"),
+              std::string::npos);
 }
 
 TEST(SpdScenes, BadNamesAndSizesAreInputErrors) {
