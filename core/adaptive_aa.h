@@ -16,11 +16,15 @@
 #include "core/sampler.h"
 #include "core/sampling.h"
 #include "core/stats.h"
+#include "core/tile_border_corners.h"
 #include "core/tile_grid.h"
 
 namespace rayo {
 
-enum class AntiAliasing { Stratified, Adaptive };
+// Corners: the mean of each pixel's four corners, every corner traced once, no subdivision (the
+// SPD's testing procedure: (W + 1) × (H + 1) camera rays; core/tile_border_corners.h). Adaptive
+// at depth 0 gives the same image but traces the corners on tile borders once per tile.
+enum class AntiAliasing { Stratified, Adaptive, Corners };
 
 struct AdaptiveSettings {
     float threshold = 0.3f;  // POV-Ray's default antialiasing threshold
@@ -47,23 +51,30 @@ inline float corner_distance(const CornerSample& a, const CornerSample& b) {
 template <typename Camera, typename Integrator>
 class AdaptiveTile {
   public:
+    // With `borders`, the corners on tile borders are traced once for the image (aa "corners").
     AdaptiveTile(const Camera& camera, const Integrator& integrator,
-                 const AdaptiveSettings& settings, RayCounters& counters)
+                 const AdaptiveSettings& settings, RayCounters& counters,
+                 TileBorderCorners<CornerSample>* borders = nullptr)
         : m_camera(camera),
           m_integrator(integrator),
           m_threshold(settings.threshold),
           m_depth(std::clamp(settings.depth, 0, kMaxAdaptiveDepth)),
           m_scale(1 << m_depth),
-          m_counters(counters) {}
+          m_counters(counters),
+          m_borders(borders) {}
 
     void render(const Tile& tile, float* rgba) {
-        // The pixel corners of the tile, (width + 1) × (height + 1), traced once per tile.
+        // The pixel corners of the tile, (width + 1) × (height + 1), traced once per tile (those
+        // on tile borders once per image, with m_borders).
         const int columns = tile.width + 1;
         m_corners.resize(static_cast<size_t>(columns) * (tile.height + 1));
         for (int cy = 0; cy <= tile.height; ++cy) {
             for (int cx = 0; cx <= tile.width; ++cx) {
+                const int x = tile.x0 + cx, y = tile.y0 + cy;
                 m_corners[static_cast<size_t>(cy) * columns + cx] =
-                    trace((tile.x0 + cx) * m_scale, (tile.y0 + cy) * m_scale);
+                    m_borders && m_borders->shared(x, y)
+                        ? m_borders->get(x, y, [&] { return trace(x * m_scale, y * m_scale); })
+                        : trace(x * m_scale, y * m_scale);
             }
         }
         for (int py = 0; py < tile.height; ++py) {
@@ -132,6 +143,7 @@ class AdaptiveTile {
     int m_depth;
     int m_scale;  // lattice steps per pixel, 2^depth
     RayCounters& m_counters;
+    TileBorderCorners<CornerSample>* m_borders;
     std::vector<CornerSample> m_corners;
 };
 

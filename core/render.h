@@ -14,7 +14,8 @@
 // The result does not depend on thread count, tile size or the coherent path: every pixel's
 // samples are summed in a fixed order by the one task that owns the pixel, and the coherent
 // path computes the same values as the single-ray one. Adaptive antialiasing
-// (core/adaptive_aa.h) replaces the per-pixel samples tile by tile.
+// (core/adaptive_aa.h) replaces the per-pixel samples tile by tile; "corners" is its corners
+// alone, those on tile borders traced once for the image (core/tile_border_corners.h).
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -22,6 +23,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <memory>
 #include <vector>
 
 #include "core/adaptive_aa.h"
@@ -44,7 +46,8 @@ struct TileSettings {
     // Camera rays of a tile in batches through the integrator's coherent path (Embree streams);
     // false: one ray at a time (the reference the coherent path is tested against).
     bool coherent = true;
-    // Stratified: spp samples per pixel. Adaptive: corner subdivision, spp unused.
+    // Stratified: spp samples per pixel. Adaptive: corner subdivision, spp unused. Corners: the
+    // mean of the four corners, each traced once (adaptive's corners without subdivision).
     AntiAliasing aa = AntiAliasing::Stratified;
     AdaptiveSettings adaptive;
     // The index of the first sample of each pixel: 0, or a progressive render's pass times its
@@ -170,6 +173,13 @@ RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
     // full disk): the others stop taking tiles, and tbb rethrows the first exception here.
     std::atomic<bool> failed{false};
     const int workers = std::max(1, std::min(count, tbb::this_task_arena::max_concurrency()));
+    // aa "corners": the corners on tile borders, traced by the first tile that needs them.
+    std::unique_ptr<TileBorderCorners<CornerSample>> borders;
+    AdaptiveSettings adaptive = settings.adaptive;
+    if (settings.aa == AntiAliasing::Corners) {
+        borders = std::make_unique<TileBorderCorners<CornerSample>>(grid);
+        adaptive.depth = 0;
+    }
     // The caller's writes (sink, counters) before every task; every task before the merge.
     int handoff = 0;
     tsan_release(&handoff);
@@ -184,9 +194,9 @@ RayCounters render_tiles(const Camera& camera, const Integrator& integrator,
                 for (int item = next_item.fetch_add(1); more(item); item = next_item.fetch_add(1)) {
                     const Tile tile = grid.tile(tiles.empty() ? item : tiles[item]);
                     rgba.assign(tile.pixel_count() * 4, 0.0f);
-                    if (settings.aa == AntiAliasing::Adaptive) {
-                        AdaptiveTile<Camera, Integrator>(camera, integrator, settings.adaptive,
-                                                         local)
+                    if (settings.aa != AntiAliasing::Stratified) {
+                        AdaptiveTile<Camera, Integrator>(camera, integrator, adaptive, local,
+                                                         borders.get())
                             .render(tile, rgba.data());
                     } else {
                         render_tile(camera, integrator, settings.coherent, spp, inverse_spp, tile,

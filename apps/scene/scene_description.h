@@ -40,7 +40,7 @@ struct RenderSettings {
     // (apps/scene/shape_method_choice.h); none: each object's own, analytic by default.
     std::optional<ShapeMethod> shape_method;
     bool coherent = true;  // tiles' camera and shadow rays as Embree streams (--single-rays: no)
-    AntiAliasing aa = AntiAliasing::Stratified;  // "aa": stratified spp, or adaptive
+    AntiAliasing aa = AntiAliasing::Stratified;  // "aa": stratified spp, adaptive or corners
     AdaptiveSettings adaptive;                   // "aa_threshold", "aa_depth"
     // "render": {"integrator": {"type": ...}} and --integrator: the registered integrators
     // (shading/integrators/integrator.h), Whitted by default.
@@ -82,10 +82,13 @@ struct RenderSettings {
         f.integer({"tile_size", "tile side in pixels, a multiple of 16"}, tile_size, kCoherentBlock,
                   kMaxTileSize);
         f.choice({"aa",
-                  "stratified (spp jittered samples per pixel) or adaptive (corner subdivision, "
-                  "POV-Ray's recursive method; docs/antialiasing.md)"},
+                  "stratified (spp jittered samples per pixel), adaptive (corner subdivision, "
+                  "POV-Ray's recursive method) or corners (the mean of the four pixel corners, "
+                  "(W+1)x(H+1) rays: the SPD's procedure; docs/antialiasing.md)"},
                  aa,
-                 {{"stratified", AntiAliasing::Stratified}, {"adaptive", AntiAliasing::Adaptive}});
+                 {{"stratified", AntiAliasing::Stratified},
+                  {"adaptive", AntiAliasing::Adaptive},
+                  {"corners", AntiAliasing::Corners}});
         f.real({"aa_threshold",
                 "adaptive: subdivide while corners differ by more than this (sum of the absolute "
                 "RGBA differences)"},
@@ -113,10 +116,10 @@ struct RenderSettings {
             return FieldProblem{"tile_size", "expected " + tile_size_expectation() + ", got " +
                                                  std::to_string(tile_size)};
         }
-        if (progressive.enabled() && aa == AntiAliasing::Adaptive) {
+        if (progressive.enabled() && aa != AntiAliasing::Stratified) {
             return FieldProblem{"aa",
-                                "adaptive antialiasing has its own stopping rule; a time limit "
-                                "or noise target renders stratified passes"};
+                                "adaptive and corner antialiasing have their own stopping rule; a "
+                                "time limit or noise target renders stratified passes"};
         }
         if (progressive.enabled() && progressive.max_spp < progressive.pass_spp) {
             return FieldProblem{"max_spp", std::to_string(progressive.max_spp) +
