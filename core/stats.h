@@ -7,6 +7,7 @@ namespace rayo {
 
 struct RayCounters {
     uint64_t camera = 0;
+    uint64_t camera_hits = 0;  // camera rays that hit a surface (the SPD's "eye hit rays")
     uint64_t shadow = 0;
     uint64_t shadow_filtered = 0;  // filtered shadows: rays continued past a transmissive surface
     uint64_t reflection = 0;
@@ -20,6 +21,7 @@ struct RayCounters {
     }
     RayCounters& operator+=(const RayCounters& o) {
         camera += o.camera;
+        camera_hits += o.camera_hits;
         shadow += o.shadow;
         shadow_filtered += o.shadow_filtered;
         reflection += o.reflection;

@@ -55,6 +55,7 @@ Vec3 WhittedIntegrator::trace(const Ray& ray, int depth, const Vec3& weight, Ray
                               const SurfaceCoefficients* medium) const {
     SurfaceHit hit;
     if (!m_accel.intersect(ray, hit)) return arriving(ray, nullptr, Vec3(0.0f), medium);
+    if (depth == 0) ++counters.camera_hits;
     return arriving(ray, &hit, shade(ray, hit, depth, weight, counters, medium), medium);
 }
 
@@ -299,7 +300,8 @@ WhittedIntegrator::Transport WhittedIntegrator::plan_transport(const Ray& ray,
             t.reflect_weight += t.transmit_weight;
         }
     }
-    if (max_component(t.reflect_weight) > 0.0f) {
+    if (max_component(t.reflect_weight) > 0.0f ||
+        (m_settings.reflect_at_transmitters && material.transmissive())) {
         const Vec3 child_weight = weight * t.reflect_weight;
         if (max_component(child_weight) >= m_settings.min_contribution) {
             t.reflect = true;
@@ -466,6 +468,9 @@ void WhittedIntegrator::radiance_coherent(const Ray* rays, int count, Vec3* radi
         for (size_t begin = 0; begin < nodes.size();) {
             const size_t end = nodes.size();
             intersect_level(nodes, begin, end);
+            if (begin == 0) {
+                for (size_t k = 0; k < end; ++k) counters.camera_hits += nodes[k].found ? 1 : 0;
+            }
             shade_level(nodes, begin, end, counters);
             for (size_t k = begin; k < end; ++k) {
                 if (!nodes[k].found) continue;

@@ -54,6 +54,11 @@ struct WhittedSettings {
     // not faster (docs/performance.md), so it is off: the recursion from the camera rays' hits
     // on traces one ray at a time.
     bool stream_secondary = false;
+    // Transmitting surfaces spawn a reflection ray even when their mirror weight is 0 (then of
+    // weight 0): the SPD's testing procedure counts a reflection ray at every hit on a reflecting
+    // or transmitting surface (its Readme, "Testing Procedures" 8 and "Database Analysis"), and
+    // the SPD's glass gears have Ks 0 (docs/performance.md, "The SPD's testing procedure").
+    bool reflect_at_transmitters = false;
 
     // The scene-file and command-line settings (core/setting.h); pixel_spread and
     // stream_secondary are the render's and the benchmarks', not the user's.
@@ -72,6 +77,10 @@ struct WhittedSettings {
                   "offset: shadow rays of smooth-shaded triangles start on the surface their "
                   "vertex normals imply (Hanika 2021); none: on the flat triangle"},
                  terminator_offset, {{"offset", true}, {"none", false}});
+        f.toggle({"reflect_at_transmitters",
+                  "transmitting surfaces always spawn a reflection ray, of weight 0 when their "
+                  "reflect is 0 (the SPD's testing procedure counts one; the image is the same)"},
+                 reflect_at_transmitters);
     }
     std::optional<FieldProblem> problem() const { return std::nullopt; }
 };
