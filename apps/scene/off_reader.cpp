@@ -94,7 +94,8 @@ PolygonMesh read_off(std::string_view bytes, const std::string& path) {
                                                     "expected OFF, COFF, NOFF, CNOFF, STOFF, ...");
         }
         // Without the keyword the file is not taken for OFF: assimp, which read it for rayo
-        // before, read on as if it were and crashed (fuzz/findings, SIGSEGV).
+        // before, read on as if it were and crashed (SIGSEGV; fuzz/corpus/mesh/
+        // off_keyword_only_in_a_comment.off).
         if (off == std::string_view::npos || k != prefix.size()) {
             throw InputError(lines.place(path),
                              "not an OFF file: expected the keyword OFF (or COFF, NOFF, CNOFF, "

@@ -386,4 +386,36 @@ TEST_F(BadInputRoundThree, InvalidGltfStridesAndRotationsAreRefused) {
                    "zero rotation quaternion");
 }
 
+// The inputs the mesh_fuzz run found inside assimp, which read PLY, STL and OFF for rayo until
+// rayo's own readers replaced it (fuzz/corpus/mesh/, the same bytes in tests/data/bad/fuzz_*):
+// with assimp, an OFF whose keyword is only in a comment crashed `rayo info` (SIGSEGV), a PLY of
+// two vertex elements corrupted the heap (SIGABRT), and four PLYs of about 500 bytes took
+// 6.7-11.5 GB and ran past 20 s. Each is refused now at its line, at once, in little memory.
+TEST_F(BadInputRoundThree, MeshFilesTheFuzzerFoundInsideAssimpAreRefused) {
+    struct Finding {
+        std::string file;
+        std::string place;
+        std::string expected;
+    };
+    const std::vector<Finding> findings = {
+        {"fuzz_off_keyword_only_in_a_comment.off", ":2",
+         "not an OFF file: expected the keyword OFF (or COFF, NOFF, CNOFF, STOFF, ...) first, "
+         "got '3'"},
+        {"fuzz_ply_second_vertex_element.ply", ":10",
+         "PLY header: a second element 'vertex' (the first is at line 4)"},
+        {"fuzz_ply_float_list_count_binary.ply", ":9",
+         "PLY list 'vertex_indices': its count type 'float' must be an integer type"},
+        {"fuzz_ply_number_out_of_range.ply", ":17",
+         "PLY element 'vertex' instance 0: property 'ny': '1e38200' is not a number"},
+        {"fuzz_ply_second_format_line.ply", ":11", "PLY header: a second format line"},
+        {"fuzz_ply_vertex_line_short.ply", ":17",
+         "PLY element 'vertex' instance 0: the line ends before property 'blue'"},
+    };
+    for (const Finding& f : findings) {
+        std::filesystem::copy_file(std::filesystem::path(RAYO_TEST_DATA_DIR) / "bad" / f.file,
+                                   m_dir / f.file);
+        expect_refused({"info", f.file}, f.file + f.place, f.expected, f.file);
+    }
+}
+
 }  // namespace
