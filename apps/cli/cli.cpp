@@ -495,7 +495,13 @@ const CommandFlag<AccuracyArgs> kAccuracyFlags[] = {
 struct SuiteArgs {
     SuiteOptions options;
     bool write_nff = false;
+    bool size_given = false;
 };
+
+// --procedure: the SPD's testing procedure (bench/lab/spd_procedure.h).
+std::vector<std::string> suite_procedure_words() {
+    return {"spd"};
+}
 
 // What --scenes takes: names of the suite's scenes (bench/lab/spd_scenes.h), comma-separated.
 std::string suite_scenes_expectation() {
@@ -509,7 +515,21 @@ const CommandFlag<SuiteArgs> kSuiteFlags[] = {
      text_rule(), [](SuiteArgs& s, const FlagValue& v) { s.options.dir = v.text; }},
     {"--size", nullptr, "N", "SPD size of every scene", "3",
      integer_rule(kSuiteSizeRange.min, kSuiteSizeRange.max),
-     [](SuiteArgs& s, const FlagValue& v) { s.options.size = v.integer; }},
+     [](SuiteArgs& s, const FlagValue& v) {
+         s.options.size = v.integer;
+         s.size_given = true;
+     }},
+    {"--procedure", nullptr, nullptr,
+     "the SPD's testing procedure: every database at its default size, rays through the pixel "
+     "corners, depth 5, no adaptive cutoff; ray counts beside the SPD Readme's, exit 1 when one "
+     "is more than 10% off (docs/performance.md)",
+     nullptr, words_rule(suite_procedure_words),
+     [](SuiteArgs& s, const FlagValue&) { s.options.spd_procedure = true; }},
+    {"--repetitions", nullptr, "N",
+     "render each scene N times: times as median (min-max), and "
+     "suite.json's aggregates",
+     "1", integer_rule(kSuiteRepetitionsRange.min, kSuiteRepetitionsRange.max),
+     [](SuiteArgs& s, const FlagValue& v) { s.options.repetitions = v.integer; }},
     {"--width", nullptr, "W", "images of W×W pixels", "512",
      integer_rule(kSuiteWidthRange.min, kSuiteWidthRange.max),
      [](SuiteArgs& s, const FlagValue& v) { s.options.width = v.integer; }},
@@ -730,6 +750,8 @@ std::string aa_summary(const RenderSettings& s) {
     std::ostringstream text;
     if (s.aa == AntiAliasing::Adaptive) {
         text << "adaptive, threshold " << s.adaptive.threshold << ", depth " << s.adaptive.depth;
+    } else if (s.aa == AntiAliasing::Corners) {
+        text << "corners, the four of each pixel averaged";
     } else {
         text << "stratified, " << s.spp << " spp";
     }
@@ -1059,7 +1081,7 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     OutputOptions options = args.output_options;
     options.metadata["rayo:scene"] = d.source;
     options.metadata["rayo:camera"] = view_text(cam);
-    if (d.settings.aa == AntiAliasing::Adaptive) {
+    if (d.settings.aa != AntiAliasing::Stratified) {
         options.metadata["rayo:antialiasing"] = aa_summary(d.settings);
     } else {
         options.metadata["rayo:spp"] = std::to_string(d.settings.spp);
@@ -1203,9 +1225,10 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         const double mrays =
             result.render_seconds > 0 ? c.total_rays() / result.render_seconds / 1e6 : 0.0;
         out << "rayo: " << output << " " << cam.width << "x" << cam.height << " "
-            << (d.settings.aa == AntiAliasing::Adaptive ? "adaptive"
-                : result.progressive                    ? progressive_summary(*result.progressive)
-                                                        : std::to_string(d.settings.spp) + "spp")
+            << (d.settings.aa == AntiAliasing::Adaptive  ? "adaptive"
+                : d.settings.aa == AntiAliasing::Corners ? "corners"
+                : result.progressive                     ? progressive_summary(*result.progressive)
+                                                         : std::to_string(d.settings.spp) + "spp")
             << (d.settings.integrator.index() == 0
                     ? std::string()
                     : std::string(" ") + integrator_name(d.settings.integrator))
@@ -1479,6 +1502,11 @@ int run_bench_suite(const std::vector<std::string>& args, std::ostream& out) {
     if (!options.dir.empty()) {
         write_suite_files(options, rows, machine);
         out << "wrote suite.csv, suite.json, suite.md, suite.gp and suite.png in " << options.dir
+    if (options.spd_procedure && parsed.size_given) {
+        throw UsageError(
+            "bench suite: --size with --procedure spd: the procedure renders each database at "
+            "its default size");
+    }
             << "\n";
     }
     return 0;
@@ -1491,6 +1519,13 @@ int run_bench_convergence(const std::vector<std::string>& args, std::ostream& ou
         if (has_scene) throw UsageError("bench convergence: unexpected argument '" + word + "'");
         options.scene = word;
         has_scene = true;
+    if (!options.spd_procedure) return 0;
+    const std::vector<std::string> failures = spd_count_failures(rows);
+    for (const std::string& failure : failures) {
+        out << "rayo bench suite --procedure spd: FAILED: " << failure << "\n";
+    }
+    if (!failures.empty()) return 1;
+    out << "rayo bench suite --procedure spd: every ray count within 10% of the SPD Readme's\n";
     });
     if (options.dir.empty()) throw UsageError("bench convergence: -o DIR is required");
     check_convergence_spp(options.max_spp, options.reference_spp);

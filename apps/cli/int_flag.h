@@ -18,6 +18,7 @@ struct IntRange {
 inline constexpr IntRange kSuiteSizeRange{1, 64};
 inline constexpr IntRange kSuiteWidthRange{2, 16384};
 inline constexpr IntRange kSuiteThreadsRange{1, 4096};
+inline constexpr IntRange kSuiteRepetitionsRange{1, 1000};
 // `rayo bench accuracy --size` (square images).
 inline constexpr IntRange kAccuracySizeRange{16, 4096};
 // `rayo bench convergence`: --width, and --reference-spp, --max-spp, --whitted-spp (render.spp's

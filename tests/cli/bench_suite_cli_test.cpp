@@ -50,6 +50,55 @@ TEST_F(BenchSuiteTest, WritesTheTableAndFilesForEveryScene) {
     EXPECT_GT(fs::file_size(m_dir / "out" / "suite.png"), 1000u);
 }
 
+// The SPD's testing procedure at 128² (CI's smoke test): every database at its default size,
+// 129² corner rays each, the counts beside the Readme's, exit 0 when all are within 10%.
+TEST_F(BenchSuiteTest, TheSpdProcedureChecksTheCountsAgainstTheReadme) {
+    const CommandResult r = run("bench suite --procedure spd --width 128 --threads 2 -o out");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("Ray counts against the SPD Readme's \"Database Analysis\""),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("input s  setup s  ray tracing s"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("every ray count within 10% of the SPD Readme's"), std::string::npos)
+        << r.output;
+    const std::string csv = read_text("out/suite.csv");
+    const std::pair<const char*, int> defaults[] = {{"balls", 4}, {"gears", 4},   {"mount", 6},
+                                                    {"rings", 7}, {"teapot", 12}, {"tetra", 6},
+                                                    {"tree", 11}};
+    for (const auto& [scene, size] : defaults) {
+        // SCENE,SIZE,128,primitives,129² camera rays
+        const size_t at =
+            csv.find(std::string("\n") + scene + "," + std::to_string(size) + ",128,");
+        ASSERT_NE(at, std::string::npos) << scene << "\n" << csv;
+        const std::string line = csv.substr(at + 1, csv.find('\n', at + 1) - at - 1);
+        EXPECT_NE(line.find(",16641,"), std::string::npos) << line;
+    }
+    const std::string md = read_text("out/suite.md");
+    EXPECT_NE(md.find("`rayo bench suite --procedure spd --width 128 --threads 2 -o out`"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("| eye hit rayo |"), std::string::npos) << md;
+}
+
+TEST_F(BenchSuiteTest, TheSpdProcedureFailsLoudlyWhenACountIsOff) {
+    // At 32² pixels (33² corners) mount's glass spheres take 15% fewer rays than the Readme's
+    // 513² corners, scaled: beyond the Readme's 10%.
+    const CommandResult r = run("bench suite --procedure spd --width 32 --scenes mount");
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("rayo bench suite --procedure spd: FAILED: mount refract rays: "),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("more than 10% off"), std::string::npos) << r.output;
+}
+
+TEST_F(BenchSuiteTest, RepetitionsGiveTheMedianMinAndMax) {
+    const CommandResult r =
+        run("bench suite --size 1 --width 16 --threads 1 --scenes tetra --repetitions 3");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("times: median (min-max) of 3 repetitions"), std::string::npos)
+        << r.output;
+}
+
 TEST_F(BenchSuiteTest, WritesTheGeneratedNffFiles) {
     const CommandResult r = run("bench suite --size 2 --scenes tetra,tree --write-nff -o nff");
     ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -81,6 +130,15 @@ TEST_F(BenchSuiteTest, BadOptionsAreClearErrors) {
     EXPECT_NE(r.output.find("up to size 6"), std::string::npos) << r.output;
     r = run("bench suite --write-nff");
     EXPECT_EQ(r.exit_code, 2) << r.output;
+    r = run("bench suite --procedure spd --size 3");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("renders each database at its default size"), std::string::npos)
+        << r.output;
+    r = run("bench suite --procedure povray");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("--procedure: expected one of \"spd\", got 'povray'"),
+              std::string::npos)
+        << r.output;
     r = run("bench suite --frobnicate");
     EXPECT_EQ(r.exit_code, 2) << r.output;
 }
@@ -121,6 +179,9 @@ TEST_F(BenchSuiteTest, HelpStatesTheBoundsTheParserEnforces) {
          "--width: " + expected(rayo::kSuiteWidthRange, rayo::kSuiteWidthRange.min - 1)},
         {"bench suite --threads " + std::to_string(rayo::kSuiteThreadsRange.max + 1),
          "--threads: " + expected(rayo::kSuiteThreadsRange, rayo::kSuiteThreadsRange.max + 1)},
+        {"bench suite --repetitions " + std::to_string(rayo::kSuiteRepetitionsRange.min - 1),
+         "--repetitions: " +
+             expected(rayo::kSuiteRepetitionsRange, rayo::kSuiteRepetitionsRange.min - 1)},
         {"bench accuracy -o out stray", "bench accuracy: unexpected argument 'stray'"},
     };
     for (const auto& r : refused) {
