@@ -147,10 +147,13 @@ RadiosityField::RadiosityField(const Scene& scene, const std::vector<Material>& 
         }
     });
 
-    // The back sides of two-sided surfaces, after every front side.
+    // The back sides of two-sided surfaces, after every front side. A one-sided mesh (NFF's
+    // opaque polygons, docs/nff.md) has no back whatever its material: rays pass through it
+    // from behind.
     const size_t fronts = m_patches.size();
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const TriangleMesh& mesh = scene.meshes[m];
+        if (mesh.one_sided) continue;
         for (size_t t = 0; t < mesh.triangles.size(); ++t) {
             if (materials[mesh.materials[t]].double_sided) cut_triangle(mesh, t, m_cuts[m][t], 1);
         }

@@ -22,7 +22,8 @@ class RadiosityField {
     // its material; every analytic shape is tessellated (core/shapes/tessellation.h) with cells
     // no longer than patch_size (0: 16 cells around, 8 along a sphere's meridians), one patch
     // per triangle. General quadrics have no tessellation: they are not in the solve.
-    // A surface of a two-sided material (Material::double_sided) has a patch per side: the
+    // A surface of a two-sided material (Material::double_sided) has a patch per side (but a
+    // one-sided mesh, TriangleMesh::one_sided, whose back rays pass through, has none): the
     // front patches of every surface come first, in the order above, then the back patches
     // (the front ones reversed, facing the other way) in the same order, so a scene whose
     // back sides receive nothing solves its front patches to the same bits as with one side.

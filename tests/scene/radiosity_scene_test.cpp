@@ -332,6 +332,10 @@ TEST(RadiosityScene, FieldCutsTrianglesToThePatchSize) {
         }
     }
     EXPECT_EQ(RadiosityField(scene, materials, 0.0f).patches().size(), 2u);
+    // A one-sided mesh (NFF's polygons: rays pass through its back) has no back patches.
+    scene.meshes[0].one_sided = true;
+    EXPECT_EQ(RadiosityField(scene, materials, 0.5f).patches().size(), 9u);
+    scene.meshes[0].one_sided = false;
     materials[0].double_sided = false;
     EXPECT_EQ(RadiosityField(scene, materials, 0.5f).patches().size(), 9u);
     EXPECT_EQ(RadiosityField(scene, materials, 0.5f).back_patch_count(), 0u);
