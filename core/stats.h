@@ -15,6 +15,12 @@ struct RayCounters {
     uint64_t total_internal_reflections = 0;
     uint64_t depth_cut = 0;         // paths stopped by the maximum depth
     uint64_t contribution_cut = 0;  // paths stopped by the minimum-contribution threshold
+    // Thread-seconds inside the accel's stream calls (traversal and hit records), by kind, where
+    // the integrator times them (the path wavefront; 0 elsewhere): the rays of a kind over its
+    // seconds are that kind's rate per thread (`--stats`).
+    double camera_trace_seconds = 0.0;
+    double bounce_trace_seconds = 0.0;  // the reflected and refracted rays
+    double shadow_trace_seconds = 0.0;
 
     uint64_t total_rays() const {
         return camera + shadow + shadow_filtered + reflection + refraction;
@@ -29,6 +35,9 @@ struct RayCounters {
         total_internal_reflections += o.total_internal_reflections;
         depth_cut += o.depth_cut;
         contribution_cut += o.contribution_cut;
+        camera_trace_seconds += o.camera_trace_seconds;
+        bounce_trace_seconds += o.bounce_trace_seconds;
+        shadow_trace_seconds += o.shadow_trace_seconds;
         return *this;
     }
 };

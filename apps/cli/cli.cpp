@@ -986,6 +986,16 @@ void print_stats_table(std::ostream& out, const SceneDescription& d, const Rende
         << "  paths cut by contribution   " << c.contribution_cut << "\n"
         << "  throughput                  " << std::fixed << std::setprecision(2) << mrays
         << " Mrays/s\n";
+    // Per kind, where the integrator timed its stream calls (the path wavefront).
+    const auto kind_rate = [&](const char* label, uint64_t rays, double seconds) {
+        if (seconds <= 0.0) return;
+        out << "  " << std::left << std::setw(28) << label << std::right << std::fixed
+            << std::setprecision(2) << rays / seconds / 1e6
+            << " Mrays/s per thread in Embree and hit records\n";
+    };
+    kind_rate("trace rate camera", c.camera, c.camera_trace_seconds);
+    kind_rate("trace rate bounce", c.reflection + c.refraction, c.bounce_trace_seconds);
+    kind_rate("trace rate shadow", c.shadow, c.shadow_trace_seconds);
     for (size_t rank = 0; r.processes.size() > 1 && rank < r.processes.size(); ++rank) {
         const ProcessWork& w = r.processes[rank];
         out << "  rank " << std::left << std::setw(23) << rank << std::right << w.tiles

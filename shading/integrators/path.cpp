@@ -3,6 +3,7 @@
 #include <tbb/enumerable_thread_specific.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -28,6 +29,10 @@ float power_heuristic(float mine, float other) {
 constexpr uint32_t kBsdfDimension = 0;
 constexpr uint32_t kRouletteDimension = 2;
 constexpr uint32_t kFirstLightDimension = 4;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 float max_component(const Vec3& v) {
     return std::max({v.x, v.y, v.z});
@@ -157,9 +162,12 @@ void PathIntegrator::radiance_coherent(const Ray* rays, const PixelSample* sampl
                 std::vector<Ray>& kind = camera_rays ? m_log->camera : m_log->bounce;
                 kind.insert(kind.end(), batch_rays, batch_rays + live);
             }
+            const auto trace_start = std::chrono::steady_clock::now();
             m_accel.intersect_coherent(
                 batch_rays, live, batch_hits, batch_found,
                 camera_rays ? Accel::Coherence::Coherent : Accel::Coherence::Incoherent);
+            (camera_rays ? counters.camera_trace_seconds : counters.bounce_trace_seconds) +=
+                seconds_since(trace_start);
             w.lights.clear();
             w.light_path.clear();
             w.direct.assign(static_cast<size_t>(n), Vec3(0.0f));
@@ -189,7 +197,9 @@ void PathIntegrator::radiance_coherent(const Ray* rays, const PixelSample* sampl
                 const int m = static_cast<int>(std::min(w.lights.size() - s, size_t(kBatch)));
                 for (int j = 0; j < m; ++j) shadows[j] = w.lights[s + size_t(j)].shadow;
                 if (m_log) m_log->shadow.insert(m_log->shadow.end(), shadows, shadows + m);
+                const auto shadow_start = std::chrono::steady_clock::now();
                 m_accel.occluded_coherent(shadows, m, occluded, Accel::Coherence::Incoherent);
+                counters.shadow_trace_seconds += seconds_since(shadow_start);
                 for (int j = 0; j < m; ++j) {
                     if (occluded[j]) continue;
                     const int k = w.light_path[s + size_t(j)];

@@ -113,6 +113,25 @@ TEST_F(IntegratorCli, AModelUnderAnEnvironmentGetsNoAutomaticLights) {
     EXPECT_EQ(listing().count("sky.png"), 1u);
 }
 
+// The path wavefront times its stream calls: --stats gives each ray kind's rate (Whitted's
+// coherent path does not time them, and says nothing).
+TEST_F(IntegratorCli, PathStatsGiveATraceRatePerRayKind) {
+    write("scene.nff", kNff);
+    const CommandResult path =
+        run("render scene.nff --integrator path --spp 4 -o path.exr --quiet --stats");
+    ASSERT_EQ(path.exit_code, 0) << path.output;
+    for (const char* kind : {"camera", "bounce", "shadow"}) {
+        const std::string line = std::string("trace rate ") + kind;
+        const size_t at = path.output.find(line);
+        ASSERT_NE(at, std::string::npos) << line << "\n" << path.output;
+        const double rate = std::stod(path.output.substr(at + 30));
+        EXPECT_GT(rate, 0.0) << line;
+    }
+    const CommandResult whitted = run("render scene.nff -o whitted.exr --quiet --stats");
+    ASSERT_EQ(whitted.exit_code, 0) << whitted.output;
+    EXPECT_EQ(whitted.output.find("trace rate"), std::string::npos) << whitted.output;
+}
+
 TEST_F(IntegratorCli, AFlagTwoIntegratorsShareTakesEachOnesBounds) {
     write("scene.nff", kNff);
     EXPECT_EQ(run("render scene.nff -o w.png --quiet --max-depth 0").exit_code, 0);
