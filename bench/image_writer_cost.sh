@@ -6,7 +6,7 @@
 # without OpenImageIO").
 # Usage: bench/image_writer_cost.sh [SCENE] [CONFIG...]
 #   SCENE   an NFF file (default ../shared/spd/balls_3.nff)
-#   CONFIG  "label=BINARY [flags...]" (default "rayo=build/rayo"), e.g.
+#   CONFIG  "label=BINARY [render flags...]" (default "rayo=build/rayo"), e.g.
 #           "direct=build/rayo --image-writer direct" "oiio=build/rayo --image-writer oiio"
 # Env: RUNS (5), SIZES ("512 2048"), THREADS (2), FORMATS ("png exr").
 set -euo pipefail
@@ -31,9 +31,9 @@ for size in "${sizes[@]}"; do
       for c in "${configs[@]}"; do
         label="${c%%=*}"
         read -r -a command <<<"${c#*=}"
-        /usr/bin/time -f "%e %U %S" -o "$out/time" "${command[@]}" render "$scene" \
+        /usr/bin/time -f "%e %U %S" -o "$out/time" "${command[0]}" render "$scene" \
           --width "$size" --height "$size" --threads "$threads" --spp 1 --quiet \
-          -o "$out/image.$fmt" >/dev/null
+          "${command[@]:1}" -o "$out/image.$fmt" >/dev/null
         awk '{ print $1 }' "$out/time" >>"$out/$label.$size.$fmt.wall"
         awk '{ print $2 + $3 }' "$out/time" >>"$out/$label.$size.$fmt.cpu"
       done

@@ -82,9 +82,11 @@ muller-2003 ~ Müller, Charypar ~ Müller 2003
 newell-1975 ~ Utah teapot|Newell's Utah ~ Newell 1975
 oneill-2014 ~ O'Neill|PCG32 ~ O'Neill 2014
 pbrt-3 ~ \bpbrt|Pharr, Jakob ~ Pharr 2016
+openexr ~ The OpenEXR File Layout|Reading and Writing OpenEXR ~
 perlin-1985 ~ Perlin 1985 ~ Perlin 1985
 perlin-2002 ~ Perlin 2002|Perlin's improved ~ Perlin 2002
 phong-1975 ~ \bPhong\b ~ Phong 1975
+png-spec ~ ISO/IEC 15948 ~
 roth-1982 ~ Roth 1982 ~ Roth 1982
 schlick-1994 ~ Schlick ~ Schlick 1994
 shirley-1992 ~ Shirley's square-to-triangle ~ Shirley 1992

@@ -639,7 +639,7 @@ PYBIND11_MODULE(rayo, m) {
           "progress: called with the fraction done.");
     m.def("write", &write_array, py::arg("image"), py::arg("path"),
           "Writes an image array through rayo's writers: .exr linear, .png/.tif/.jpg through the "
-          "OCIO view. Keywords: display, view, range, half, exr_compression.");
+          "OCIO view. Keywords: display, view, range, half, exr_compression, image_writer.");
     m.def("read", &read_array, py::arg("path"),
           "An image file's pixels: a float32 array height × width × channels (EXR linear as "
           "stored; 8-bit formats as value/255).");

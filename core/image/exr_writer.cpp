@@ -1,6 +1,6 @@
 // OpenEXR through its C++ library (OpenEXR 3.1: Imf::OutputFile for scanlines,
 // Imf::TiledOutputFile for tiles; the file layout and attributes of "The OpenEXR File Layout" and
-// "Reading and Writing OpenEXR Image Files with the IlmImf Library", docs/references.md).
+// "Reading and Writing OpenEXR Image Files", docs/references.md `openexr`).
 #include "core/image/exr_writer.h"
 
 #include <ImfChannelList.h>

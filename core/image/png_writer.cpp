@@ -1,7 +1,7 @@
-// PNG through libpng (the PNG specification, ISO/IEC 15948, and libpng's manual: the write
-// sequence IHDR, ancillary chunks, png_write_info, rows, png_write_end). libpng reports errors by
-// longjmp to the setjmp of the call that failed: every method that calls libpng sets one, with no
-// C++ object of its own alive between the setjmp and the calls.
+// PNG through libpng (the PNG specification, ISO/IEC 15948, and libpng's manual, docs/references.md
+// `png-spec`: the write sequence IHDR, ancillary chunks, png_write_info, rows, png_write_end).
+// libpng reports errors by longjmp to the setjmp of the call that failed: every method that calls
+// libpng sets one, with no C++ object of its own alive between the setjmp and the calls.
 #include "core/image/png_writer.h"
 
 #include <png.h>
@@ -79,7 +79,7 @@ class PngWriter : public ImageWriter {
                 level = a.integer;
             if (a.kind == ImageAttribute::Kind::Integer && a.name == "png:filter")
                 filter = a.integer;
-            // A keyword is 1-79 Latin-1 bytes (PNG 11.3.4.3); longer ones would stop libpng.
+            // A keyword is 1-79 Latin-1 bytes (png-spec, tEXt); longer ones would stop libpng.
             if (a.kind != ImageAttribute::Kind::Text || a.name.empty() || a.name.size() > 79 ||
                 a.name.compare(0, 5, "oiio:") == 0)
                 continue;

@@ -326,6 +326,11 @@ def test_write_uses_the_clis_writers_and_views(tmp_path):
     assert np.allclose(rayo.read(str(tmp_path / "h.exr")), image, rtol=1e-3, atol=1e-3)
     rayo.write(image[..., :3], str(tmp_path / "rgb.exr"))
     assert rayo.read(str(tmp_path / "rgb.exr"))[..., 3].min() == 1.0
+    # PNG and EXR are written with libpng and OpenEXR; OpenImageIO's writers are the reference.
+    for name in ("a.png", "a.exr"):
+        rayo.write(image, str(tmp_path / ("oiio-" + name)), image_writer="oiio")
+        assert np.array_equal(rayo.read(str(tmp_path / ("oiio-" + name))),
+                              rayo.read(str(tmp_path / name)))
 
 
 def test_write_refuses_bad_output_and_leaves_no_file(tmp_path):
