@@ -394,8 +394,9 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"VfovOnFisheye",
                   R"({"rayo": 1, "camera": {"projection": "fisheye", "vfov": 60}})",
                   "scene.json#/camera/vfov", "the fisheye projection takes its angle from fov"},
-        ErrorCase{"UnknownAa", R"({"rayo": 1, "render": {"aa": "fxaa"}})", "scene.json#/render/aa",
-                  "expected one of \"stratified\", \"adaptive\", got the string \"fxaa\""},
+        ErrorCase{
+            "UnknownAa", R"({"rayo": 1, "render": {"aa": "fxaa"}})", "scene.json#/render/aa",
+            "expected one of \"stratified\", \"adaptive\", \"corners\", got the string \"fxaa\""},
         ErrorCase{"NegativeAaThreshold", R"({"rayo": 1, "render": {"aa_threshold": -0.5}})",
                   "scene.json#/render/aa_threshold", "expected a number >= 0, got -0.5"},
         ErrorCase{"AaDepthTooLarge", R"({"rayo": 1, "render": {"aa_depth": 9}})",
