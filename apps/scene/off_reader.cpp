@@ -180,11 +180,13 @@ PolygonMesh read_off(std::string_view bytes, const std::string& path) {
             at += 3;
         }
         if (variant.colors) {
+            // Finite as floats: "2551e38" is a double but not a float (found by
+            // fuzz/mesh_fuzz.cpp: the colour became infinite).
             const Vec3 color(value[at], value[at + 1], value[at + 2]);
             for (size_t k = 0; k < 3; ++k) {
                 long long integer = 0;
                 integer_colors = integer_colors && parse_integer(w[at + k], integer);
-                if (!std::isfinite(value[at + k]) || value[at + k] < 0.0) {
+                if (!std::isfinite(color[k]) || color[k] < 0.0f) {
                     throw InputError(lines.place(path),
                                      vertex + ": the colour (r, g, b) must be finite and >= 0");
                 }

@@ -110,6 +110,9 @@ TEST(OffReader, MistakesRefusedAtTheirLine) {
          "vertex 0: expected 6 or 7 numbers (x y z r g b [a]), got 5"},
         {"COFF\n3 1 0\n0 0 0 1 -1 0\n1 0 0 1 1 1\n0 1 0 1 1 1\n3 0 1 2\n", "m.off:3",
          "vertex 0: the colour (r, g, b) must be finite and >= 0"},
+        // A double beyond float's range (found by fuzz/mesh_fuzz.cpp: the colour was infinite).
+        {"COFF\n3 1 0\n0 0 0 1 0 0\n1 0 0 0 0 2551e38\n0 1 0 1 1 1\n3 0 1 2\n", "m.off:4",
+         "vertex 1: the colour (r, g, b) must be finite and >= 0"},
         {"OFF\n3 1 0\n0 0 0\n1 0 1e19\n0 1 0\n3 0 1 2\n", "m.off:4",
          "vertex 1: coordinates must be a finite number (in float range) of magnitude <= 1e18, "
          "so that its square fits a float"},

@@ -164,6 +164,11 @@ TEST(PlyReader, ColoursOfEachTypeScaledByTheirLargestValue) {
                  "property char red\nproperty char green\nproperty char blue\nend_header\n"
                  "0 0 0 -1 0 0\n");
     EXPECT_EQ(negative.where(), "m.ply:11");
+    // A double beyond float's range is refused as a colour, not made infinite.
+    EXPECT_EQ(error_of(head + "property double red\nproperty double green\nproperty double blue\n"
+                              "end_header\n0 0 0 1e300 0 0\n")
+                  .message(),
+              negative.message());
     EXPECT_EQ(negative.message(),
               "PLY element 'vertex' instance 0: the colour (red, green, blue) must be finite and "
               ">= 0");
