@@ -46,6 +46,7 @@ beer-lambert ~ Beer.Lambert|beer_lambert|BeerLambert ~
 blinn-1977 ~ Blinn 1977|SpecularModel::Blinn ~ Blinn 1977
 blinn-1978 ~ Blinn 1978|Wrinkled Surfaces ~ Blinn 1978
 burley-2012 ~ Burley 2012|Shading at Disney ~ Burley 2012
+chen-asau-1974 ~ Chen (&|and) Asau ~ Chen 1974, Asau 1974
 cohen-1988 ~ Cohen et al\.|Cohen, Chen ~ Cohen 1988
 cohen-sutherland ~ Cohen.Sutherland ~
 duff-2017 ~ Duff et al ~ Duff 2017

@@ -64,9 +64,7 @@ bool MeshEmitter::sample(const Vec3& point, const glm::vec2& u, LightSample& out
     // Triangle i with probability wᵢ/W: the first running sum above u.x·W.
     const float total = m_cdf.back();
     const float target = u.x * total;
-    const size_t i = std::min<size_t>(
-        static_cast<size_t>(std::upper_bound(m_cdf.begin(), m_cdf.end(), target) - m_cdf.begin()),
-        m_cdf.size() - 1);
+    const size_t i = std::min<size_t>(m_guide.find(m_cdf, u.x, target), m_cdf.size() - 1);
     const float low = i == 0 ? 0.0f : m_cdf[i - 1];
     const float weight = m_cdf[i] - low;
     const float v = std::clamp((target - low) / weight, 0.0f, 0.99999994f);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/cdf_guide.h"
 #include "core/setting.h"
 #include "core/shapes/shape_fields.h"
 #include "shading/light_sample.h"
@@ -52,8 +53,13 @@ class MeshEmitter {
     float area() const { return m_area; }
     const std::vector<Triangle>& triangles() const { return m_triangles; }
     // As AreaLight::sample: uniform u ∈ [0,1)² picks the triangle (u.x, by the power CDF,
-    // then rescaled to [0,1) inside the triangle's interval) and the point on it.
+    // then rescaled to [0,1) inside the triangle's interval) and the point on it. After
+    // finish() the CDF is entered through a guide table (core/cdf_guide.h: expected O(1) per
+    // sample, the same triangle as the binary search that is used before it).
     bool sample(const Vec3& point, const glm::vec2& u, LightSample& out) const;
+    // Builds the CDF's guide table; called once after the last add (add_mesh_emitter_light).
+    // An add after it leaves the table stale, and sample() searches by bisection until the next.
+    void finish() { m_guide.build(m_cdf); }
     // The solid-angle density of `direction` under sample (AreaLight::pdf).
     float pdf(const Vec3& point, const Vec3& direction) const;
     // The same for a direction whose first hit `at` is known to be one of the triangles: the
@@ -64,6 +70,7 @@ class MeshEmitter {
   private:
     std::vector<Triangle> m_triangles;
     std::vector<float> m_cdf;  // running sum of the weights, m_cdf.back() = total
+    CdfGuide m_guide;          // finish()
     float m_area = 0.0f;
 };
 

@@ -76,6 +76,7 @@ size_t add_mesh_emitter_light(SceneDescription& d, int samples) {
         }
     }
     if (emitter->empty()) return 0;
+    emitter->finish();
     AreaLight light;
     light.shape = AreaLight::Shape::Mesh;
     light.samples = samples;
