@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -24,6 +25,7 @@
 #include "core/progressive_settings.h"
 #include "core/render.h"
 #include "core/stop_request.h"
+#include "core/tile_distribution.h"
 #include "core/tile_grid.h"
 #include "core/tile_sink.h"
 
@@ -110,19 +112,45 @@ inline std::string pass_title(const ProgressiveResult& so_far, int pass_spp) {
     return title.str();
 }
 
+// After a pass: why the passes stop there, or nothing to go on (render_progressive's rule).
+inline std::optional<ProgressiveStop> progressive_stop(const ProgressiveSettings& progressive,
+                                                       const ProgressiveResult& so_far,
+                                                       double elapsed, uint32_t max_spp) {
+    if (stop_requested()) return ProgressiveStop::Interrupted;
+    if (progressive.noise_target > 0.0f && so_far.passes >= kMinNoisePasses &&
+        so_far.noise <= progressive.noise_target) {
+        return ProgressiveStop::NoiseTarget;
+    }
+    if (progressive.time_limit > 0.0f && elapsed >= progressive.time_limit) {
+        return ProgressiveStop::TimeLimit;
+    }
+    if (static_cast<uint64_t>(so_far.spp) + static_cast<uint32_t>(progressive.pass_spp) > max_spp) {
+        return ProgressiveStop::Samples;
+    }
+    return std::nullopt;
+}
+
 // Renders passes of `progressive.pass_spp` samples (settings.spp is ignored) until the first of:
 // the noise estimate at or below the target (after kMinNoisePasses), the time limit crossed
 // by the pass just finished, `max_spp` reached, or a stop request (core/stop_request.h), which
 // drops the unfinished pass and delivers nothing. Otherwise the mean of the passes goes to
 // `sink`. The caller checks the image fits in memory (PassAccumulator: 32 bytes a pixel).
+// With a `distribution` (MPI ranks, docs/distributed.md) each pass's tiles are shared out and
+// gathered on the writing process, which alone accumulates, estimates the noise, decides for
+// every process whether another pass follows (TileDistribution::follow_writer) and delivers;
+// `processes` then sums each process's work over the passes. The passes are the same bits as
+// in one process, so the image and the number of passes are too.
 template <typename Camera, typename Integrator>
 ProgressiveResult render_progressive(const Camera& camera, const Integrator& integrator,
                                      TileSettings settings, const ProgressiveSettings& progressive,
-                                     uint32_t max_spp, TileSink& sink, bool show_progress) {
+                                     uint32_t max_spp, TileSink& sink, bool show_progress,
+                                     TileDistribution* distribution = nullptr,
+                                     std::vector<ProcessWork>* processes = nullptr) {
     const TileGrid grid(camera.width(), camera.height(), settings.tile_size);
     const auto pass_spp = static_cast<uint32_t>(progressive.pass_spp);
     const uint64_t pixels = static_cast<uint64_t>(camera.width()) * camera.height();
-    PassAccumulator accumulator(camera.width(), camera.height());
+    const bool writer = distribution == nullptr || distribution->writes_image();
+    PassAccumulator accumulator(writer ? camera.width() : 1, writer ? camera.height() : 1);
     settings.spp = progressive.pass_spp;
     settings.aa = AntiAliasing::Stratified;
     const auto start = std::chrono::steady_clock::now();
@@ -131,33 +159,53 @@ ProgressiveResult render_progressive(const Camera& camera, const Integrator& int
         settings.first_sample = result.spp;
         {
             ProgressReporter progress(pixels, pass_title(result, progressive.pass_spp),
-                                      show_progress);
-            result.counters += render_tiles(camera, integrator, settings, accumulator, &progress);
+                                      show_progress && writer);
+            if (distribution == nullptr) {
+                result.counters +=
+                    render_tiles(camera, integrator, settings, accumulator, &progress);
+            } else {
+                const auto render_chunk = [&](const std::vector<int>& list, TileSink& chunk) {
+                    return render_tiles(camera, integrator, settings, chunk, nullptr, list);
+                };
+                result.counters +=
+                    distribution->render(grid, {}, render_chunk, accumulator, &progress);
+                if (processes) {
+                    const std::vector<ProcessWork>& pass = distribution->work();
+                    processes->resize(pass.size());
+                    for (size_t rank = 0; rank < pass.size(); ++rank) {
+                        (*processes)[rank].tiles += pass[rank].tiles;
+                        (*processes)[rank].counters += pass[rank].counters;
+                        (*processes)[rank].seconds += pass[rank].seconds;
+                    }
+                }
+            }
         }
-        if (stop_requested()) {
-            result.stop = ProgressiveStop::Interrupted;
-            return result;
+        std::optional<ProgressiveStop> stop;
+        if (writer) {
+            if (!stop_requested()) {
+                ++result.passes;
+                result.spp += pass_spp;
+                result.noise = accumulator.relative_noise(result.passes);
+            }
+            const double elapsed =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            stop = progressive_stop(progressive, result, elapsed, max_spp);
         }
-        ++result.passes;
-        result.spp += pass_spp;
-        result.noise = accumulator.relative_noise(result.passes);
-        const double elapsed =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (progressive.noise_target > 0.0f && result.passes >= kMinNoisePasses &&
-            result.noise <= progressive.noise_target) {
-            result.stop = ProgressiveStop::NoiseTarget;
-            break;
+        if (distribution) {
+            // -1: another pass; else the writer's ProgressiveStop, which every process follows.
+            const int decision = distribution->follow_writer(stop ? static_cast<int>(*stop) : -1);
+            if (!writer) {
+                if (decision >= 0) stop = static_cast<ProgressiveStop>(decision);
+                ++result.passes;
+                result.spp += pass_spp;
+            }
         }
-        if (progressive.time_limit > 0.0f && elapsed >= progressive.time_limit) {
-            result.stop = ProgressiveStop::TimeLimit;
-            break;
-        }
-        if (static_cast<uint64_t>(result.spp) + pass_spp > max_spp) {
-            result.stop = ProgressiveStop::Samples;
-            break;
-        }
+        if (!stop) continue;
+        result.stop = *stop;
+        if (result.stop == ProgressiveStop::Interrupted) return result;
+        break;
     }
-    accumulator.deliver(grid, result.passes, sink);
+    if (writer) accumulator.deliver(grid, result.passes, sink);
     return result;
 }
 

@@ -41,6 +41,9 @@ class TileDistribution {
     virtual bool writes_image() const = 0;
     // Per process (index = rank), filled on the writing process by render().
     virtual const std::vector<ProcessWork>& work() const = 0;
+    // Collective: every process returns the `decision` the writing process passed (what a loop
+    // of renders does next, decided where the image is: core/progressive.h's passes).
+    virtual int follow_writer(int decision) = 0;
 };
 
 }  // namespace rayo

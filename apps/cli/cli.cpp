@@ -1107,11 +1107,6 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
                 "--resume: a progressive render (--time-limit, --noise-target) keeps no tile "
                 "before its last pass; render it again");
         }
-        if (MpiWorld::distributed()) {
-            throw UsageError(
-                "--time-limit, --noise-target: not available under mpirun; render in one "
-                "process, or give a fixed --spp");
-        }
     }
     options.metadata["rayo:threads"] =
         std::to_string(threads > 0 ? threads : default_thread_count());

@@ -122,6 +122,13 @@ bool MpiTileDistribution::writes_image() const {
     return MpiWorld::rank() == 0;
 }
 
+int MpiTileDistribution::follow_writer(int decision) {
+#if RAYO_HAVE_MPI
+    if (MpiWorld::distributed()) MPI_Bcast(&decision, 1, MPI_INT, 0, MPI_COMM_WORLD);
+#endif
+    return decision;
+}
+
 RayCounters MpiTileDistribution::render(const TileGrid& grid, const std::vector<int>& tiles,
                                         const RenderTilesFunction& render_tiles, TileSink& sink,
                                         ProgressReporter* progress) {

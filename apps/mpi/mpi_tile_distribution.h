@@ -28,6 +28,7 @@ class MpiTileDistribution : public TileDistribution {
                        const RenderTilesFunction& render_tiles, TileSink& sink,
                        ProgressReporter* progress) override;
     bool writes_image() const override;
+    int follow_writer(int decision) override;
     const std::vector<ProcessWork>& work() const override { return m_work; }
     // Whether render() has passed the ranks' agreement that none failed before it: an error
     // before that point must be agreed on (MpiWorld::agree_on_failure); an error after it ends

@@ -218,15 +218,13 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
 
     IntegratorContext context{accel, description.shading, radiosity.get(), images.get()};
     const ProgressiveSettings& progressive = description.settings.progressive;
-    if (progressive.enabled() && (distribution != nullptr ||
-                                  (tiles != nullptr && static_cast<int>(tiles->size()) !=
-                                                           TileGrid(camera.width(), camera.height(),
-                                                                    description.settings.tile_size)
-                                                               .tile_count()))) {
-        // The CLI refuses these first (--resume, mpirun); a library caller gets this.
+    if (progressive.enabled() && tiles != nullptr &&
+        static_cast<int>(tiles->size()) !=
+            TileGrid(camera.width(), camera.height(), description.settings.tile_size)
+                .tile_count()) {
+        // The CLI refuses this first (--resume); a library caller gets this.
         throw std::invalid_argument(
-            "a progressive render (time_limit, noise_target) runs in one process and renders "
-            "every tile");
+            "a progressive render (time_limit, noise_target) renders every tile");
     }
     if (progressive.enabled() &&
         int64_t(camera.width()) * camera.height() > kMaxProgressivePixels) {
@@ -281,10 +279,10 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
                         typename std::decay_t<decltype(integrator_settings)>::Integrator;
                     const Integrator integrator(context, integrator_settings);
                     if (progressive.enabled()) {
-                        result.progressive =
-                            render_progressive(camera, integrator, settings, progressive,
-                                               static_cast<uint32_t>(progressive.max_spp), target,
-                                               show_progress && writes_image);
+                        result.progressive = render_progressive(
+                            camera, integrator, settings, progressive,
+                            static_cast<uint32_t>(progressive.max_spp), target,
+                            show_progress && writes_image, distribution, &result.processes);
                         result.counters = result.progressive->counters;
                         return;
                     }

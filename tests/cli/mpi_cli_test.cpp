@@ -130,6 +130,28 @@ TEST_F(MpiCli, AnUnwritableOutputOnRankZeroStopsEveryRank) {
     EXPECT_EQ(r.output.find("rayo: error:"), r.output.rfind("rayo: error:"));
 }
 
+// Progressive passes (core/progressive.h) shared out among the ranks: rank 0 accumulates and
+// decides for every rank when to stop, so the image, the passes and the noise are the same as
+// in one process; the summary is printed once.
+TEST_F(MpiCli, ProgressiveRendersGiveTheSameBitsAndPassesAsOneProcess) {
+    write("scene.nff", kScene);
+    const std::string args =
+        "render scene.nff --tile-size 16 --pass-spp 2 --max-spp 16 --noise-target 0.02 -o ";
+    const CommandResult one = run(args + "one.exr");
+    ASSERT_EQ(one.exit_code, 0) << one.output;
+    const size_t at = one.output.find(" passes, noise ");
+    ASSERT_NE(at, std::string::npos) << one.output;
+    const std::string passes = one.output.substr(one.output.rfind('(', at), 40);
+    for (int ranks : {2, 3}) {
+        const CommandResult many = run(args + "many.exr --threads 1", mpirun(ranks));
+        ASSERT_EQ(many.exit_code, 0) << ranks << " ranks: " << many.output;
+        EXPECT_EQ(read_pixels("many.exr"), read_pixels("one.exr")) << ranks << " ranks";
+        EXPECT_NE(many.output.find(passes), std::string::npos) << passes << "\n" << many.output;
+        EXPECT_EQ(many.output.find("rayo: many.exr"), many.output.rfind("rayo: many.exr"))
+            << many.output;
+    }
+}
+
 // No partial render under mpirun (docs/high-resolution.md, "Interrupt and resume"): none is
 // left by a render, and --resume is refused once, by every rank.
 TEST_F(MpiCli, ResumeIsRefusedAndNoPartialRenderIsKept) {
