@@ -39,12 +39,13 @@ MachineInfo machine_info();
 
 // One repetition's times, in seconds.
 struct SuiteRun {
-    double generate = 0;    // the NFF text made and read (parse included)
-    double parse = 0;       // the NFF text read (the SPD's "input")
-    double bvh = 0;         // the BVH build (the SPD's "setup")
-    double render = 0;      // the render (the SPD's "ray tracing")
-    double render_cpu = 0;  // the process's CPU time during the render, all threads
-    double total = 0;       // generate + BVH + render
+    double generate = 0;     // the NFF text made and read (parse included)
+    double parse = 0;        // the NFF text read (the SPD's "input")
+    double bvh = 0;          // the BVH build (the SPD's "setup")
+    double render = 0;       // the render (the SPD's "ray tracing")
+    double render_cpu = 0;   // the process's CPU time, all threads, over the BVH build + render
+    double render_wall = 0;  // the wall time of the same (suite.json's real_time)
+    double total = 0;        // generate + BVH + render
 };
 
 struct SuiteRow {
@@ -83,8 +84,9 @@ void print_spd_procedure_table(std::ostream& out, const std::vector<SuiteRow>& r
 std::vector<std::string> spd_count_failures(const std::vector<SuiteRow>& rows);
 
 // suite.json: Google Benchmark's JSON form ("context", "benchmarks": one entry per scene and
-// repetition, real_time and cpu_time the render's, rays per second by kind as counters; with
-// repetitions, the aggregates _mean, _median, _stddev, _min and _max).
+// repetition, real_time and cpu_time those of the BVH build and the render, rays per second of
+// the render by kind as counters; with repetitions, the aggregates _mean, _median, _stddev, _min
+// and _max).
 std::string suite_json(const SuiteOptions& options, const std::vector<SuiteRow>& rows,
                        const MachineInfo& machine);
 
