@@ -95,10 +95,33 @@ class PassAccumulator : public TileSink {
         sink.finish();
     }
 
+    int width() const { return m_width; }
+    // The sums themselves, for a checkpoint to save and restore (ProgressiveCheckpoint):
+    // RGBA floats, 4 a pixel, and the luminance's sum and sum of squares, 2 doubles a pixel.
+    std::vector<float>& rgba_sums() { return m_rgba; }
+    std::vector<double>& luminance_sums() { return m_luminance; }
+    const std::vector<float>& rgba_sums() const { return m_rgba; }
+    const std::vector<double>& luminance_sums() const { return m_luminance; }
+
   private:
     int m_width;
     std::vector<float> m_rgba;
     std::vector<double> m_luminance;
+};
+
+// Where a progressive render keeps its finished passes so that a later run goes on from them
+// (`rayo render --resume`: core/image/pass_journal.h).
+class ProgressiveCheckpoint {
+  public:
+    virtual ~ProgressiveCheckpoint() = default;
+    // Before the first pass: the passes an earlier run kept, into `accumulator` (sized for the
+    // image), `so_far` (passes, spp, noise) and `elapsed` (its seconds); false when none.
+    virtual bool restore(PassAccumulator& accumulator, ProgressiveResult& so_far,
+                         double& elapsed) = 0;
+    // After each finished pass: the passes so far, which the checkpoint keeps when it chooses
+    // (how often is its own rule).
+    virtual void pass_finished(const PassAccumulator& accumulator, const ProgressiveResult& so_far,
+                               double elapsed) = 0;
 };
 
 // "pass 3, 12 spp, noise 4.1%" (the progress bar's title).
@@ -139,13 +162,17 @@ inline std::optional<ProgressiveStop> progressive_stop(const ProgressiveSettings
 // gathered on the writing process, which alone accumulates, estimates the noise, decides for
 // every process whether another pass follows (TileDistribution::follow_writer) and delivers;
 // `processes` then sums each process's work over the passes. The passes are the same bits as
-// in one process, so the image and the number of passes are too.
+// in one process, so the image and the number of passes are too. A `checkpoint` (one process)
+// gives the passes of an earlier run to start from and keeps each finished pass: a resumed
+// render is the same bits as one never interrupted, and its time limit counts the earlier
+// runs' seconds.
 template <typename Camera, typename Integrator>
 ProgressiveResult render_progressive(const Camera& camera, const Integrator& integrator,
                                      TileSettings settings, const ProgressiveSettings& progressive,
                                      uint32_t max_spp, TileSink& sink, bool show_progress,
                                      TileDistribution* distribution = nullptr,
-                                     std::vector<ProcessWork>* processes = nullptr) {
+                                     std::vector<ProcessWork>* processes = nullptr,
+                                     ProgressiveCheckpoint* checkpoint = nullptr) {
     const TileGrid grid(camera.width(), camera.height(), settings.tile_size);
     const auto pass_spp = static_cast<uint32_t>(progressive.pass_spp);
     const uint64_t pixels = static_cast<uint64_t>(camera.width()) * camera.height();
@@ -153,9 +180,24 @@ ProgressiveResult render_progressive(const Camera& camera, const Integrator& int
     PassAccumulator accumulator(writer ? camera.width() : 1, writer ? camera.height() : 1);
     settings.spp = progressive.pass_spp;
     settings.aa = AntiAliasing::Stratified;
-    const auto start = std::chrono::steady_clock::now();
     ProgressiveResult result;
-    for (;;) {
+    double earlier = 0.0;  // seconds of the runs before a resume
+    if (checkpoint && writer) checkpoint->restore(accumulator, result, earlier);
+    const auto start = std::chrono::steady_clock::now();
+    const auto elapsed = [&] {
+        return earlier +
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    // Resumed past its stopping rule (a lower cap or limit than the run that kept the passes):
+    // the passes kept are the image.
+    bool done = false;
+    if (result.passes > 0) {
+        const std::optional<ProgressiveStop> stop =
+            progressive_stop(progressive, result, elapsed(), max_spp);
+        done = stop && *stop != ProgressiveStop::Interrupted;
+        if (done) result.stop = *stop;
+    }
+    while (!done) {
         settings.first_sample = result.spp;
         {
             ProgressReporter progress(pixels, pass_title(result, progressive.pass_spp),
@@ -186,10 +228,9 @@ ProgressiveResult render_progressive(const Camera& camera, const Integrator& int
                 ++result.passes;
                 result.spp += pass_spp;
                 result.noise = accumulator.relative_noise(result.passes);
+                if (checkpoint) checkpoint->pass_finished(accumulator, result, elapsed());
             }
-            const double elapsed =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            stop = progressive_stop(progressive, result, elapsed, max_spp);
+            stop = progressive_stop(progressive, result, elapsed(), max_spp);
         }
         if (distribution) {
             // -1: another pass; else the writer's ProgressiveStop, which every process follows.
@@ -203,7 +244,7 @@ ProgressiveResult render_progressive(const Camera& camera, const Integrator& int
         if (!stop) continue;
         result.stop = *stop;
         if (result.stop == ProgressiveStop::Interrupted) return result;
-        break;
+        done = true;
     }
     if (writer) accumulator.deliver(grid, result.passes, sink);
     return result;

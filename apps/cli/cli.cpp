@@ -46,6 +46,7 @@
 #include "core/image/image_writers.h"
 #include "core/image/interrupt_cleanup.h"
 #include "core/image/partial_render.h"
+#include "core/image/pass_journal.h"
 #include "core/image/tile_stream.h"
 #include "core/image_library.h"
 #include "core/path_util.h"
@@ -848,6 +849,14 @@ void discard_unfinished(std::unique_ptr<TileStream>& stream) {
     if (saved >= 0) ::close(saved);
 }
 
+// RAYO_TEST_INTERRUPT_PASSES=K (for tests): a progressive render raises SIGINT once K passes
+// are kept, as a user's Ctrl-C would then.
+void apply_test_interrupt_passes(PassJournal& journal) {
+    const char* value = std::getenv("RAYO_TEST_INTERRUPT_PASSES");
+    if (value == nullptr || *value == '\0') return;
+    journal.interrupt_after(std::atoi(value));
+}
+
 // RAYO_TEST_INTERRUPT=K[:TERM] (for tests): the render raises SIGINT (SIGTERM) once K tiles are
 // in the partial render, as a user's Ctrl-C would at that point.
 void apply_test_interrupt(PartialRender& partial) {
@@ -1102,11 +1111,6 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         options.metadata["rayo:spp"] = "progressive, passes of " +
                                        std::to_string(progressive.pass_spp) + ", at most " +
                                        std::to_string(progressive.max_spp);
-        if (args.resume) {
-            throw UsageError(
-                "--resume: a progressive render (--time-limit, --noise-target) keeps no tile "
-                "before its last pass; render it again");
-        }
     }
     options.metadata["rayo:threads"] =
         std::to_string(threads > 0 ? threads : default_thread_count());
@@ -1132,20 +1136,42 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     // the journal's and the streamed output's writer below).
     if (writes_image) start_worker_threads(threads);
     std::unique_ptr<PartialRender> partial;
+    std::unique_ptr<PassJournal> passes;  // a progressive render's (core/image/pass_journal.h)
     std::vector<int> missing;
     if (args.journal && !MpiWorld::distributed()) {
         const TileGrid grid(cam.width, cam.height, d.settings.tile_size);
         const RenderFingerprint fingerprint = render_fingerprint(args, d);
         const auto keep_after = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
             std::chrono::duration<double>(args.journal_after_s.value_or(kJournalAfterSeconds)));
-        partial = args.resume ? PartialRender::resume(output, grid, fingerprint)
-                              : PartialRender::create(output, grid, fingerprint, keep_after);
-        missing = partial->missing_tiles();
-        apply_test_interrupt(*partial);
-        if (args.resume && !args.quiet) {
-            err << "rayo: resuming " << partial->path() << ": " << partial->tiles_done() << " of "
-                << partial->tile_count() << " tiles done, " << missing.size() << " to render\n";
+        if (progressive.enabled()) {
+            // The passes are kept, not tiles (its tiles come after the last pass): the partial
+            // render only tells an interrupted render from a finished one. The stopping rule
+            // does not decide a pass's pixels: a resume may change it (go on for longer).
+            RenderFingerprint pass_fingerprint;
+            for (const auto& entry : fingerprint) {
+                if (entry.first != "time limit" && entry.first != "noise target" &&
+                    entry.first != "max spp")
+                    pass_fingerprint.push_back(entry);
+            }
+            passes = args.resume ? PassJournal::resume(output, pass_fingerprint, keep_after)
+                                 : PassJournal::create(output, pass_fingerprint, keep_after);
+            partial = PartialRender::create(output, grid, fingerprint, keep_after);
+            apply_test_interrupt_passes(*passes);
+            if (args.resume && !args.quiet) {
+                err << "rayo: resuming " << passes->path() << ": " << passes->passes_kept()
+                    << " passes (" << passes->spp_kept() << " spp) done\n";
+            }
+        } else {
+            partial = args.resume ? PartialRender::resume(output, grid, fingerprint)
+                                  : PartialRender::create(output, grid, fingerprint, keep_after);
+            apply_test_interrupt(*partial);
+            if (args.resume && !args.quiet) {
+                err << "rayo: resuming " << partial->path() << ": " << partial->tiles_done()
+                    << " of " << partial->tile_count() << " tiles done, "
+                    << partial->missing_tiles().size() << " to render\n";
+            }
         }
+        missing = partial->missing_tiles();
     }
 
     double write_s = 0.0;
@@ -1173,7 +1199,7 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         if (writes_image && !stream && writer_needs_image_library(output, options.writer))
             preload_image_library();
         result = render_scene(d, threads, progress, recorder ? recorder.get() : sink, ranks,
-                              partial ? &missing : nullptr);
+                              partial ? &missing : nullptr, passes.get());
     }
     if (partial) {
         partial->flush();
@@ -1187,9 +1213,14 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
     if (partial && !partial->complete()) {  // a stop request ended the hand-out of tiles
         discard_unfinished(stream);         // nothing under the output's name
         if (result.progressive) {
-            err << "rayo: interrupted in pass " << result.progressive->passes + 1
-                << "; nothing kept (a progressive render keeps its image only after its last "
-                   "pass)\n";
+            err << "rayo: interrupted in pass " << result.progressive->passes + 1 << "; ";
+            if (passes && passes->passes_kept() > 0) {
+                err << passes->passes_kept() << " passes (" << passes->spp_kept()
+                    << " spp) kept in " << passes->path() << ": resume with --resume\n";
+            } else {
+                err << "nothing kept (passes are kept from --journal-after seconds into a "
+                       "render on)\n";
+            }
             return 128 + stop_signal();
         }
         const int done = partial->tiles_done();
@@ -1215,6 +1246,7 @@ int render_command(const std::vector<std::string>& arg_list, std::ostream& out, 
         write_s = seconds_since(start);
     }
     if (partial) partial->remove();  // the output is complete
+    if (passes) passes->remove();
 
     if (args.gi_log && result.radiosity) {
         // The chart of docs/radiosity.md: unshot energy (a fraction of the emitted) per shot.

@@ -144,7 +144,7 @@ void start_worker_threads(int threads) {
 
 RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress,
                           TileSink* sink, TileDistribution* distribution,
-                          const std::vector<int>* tiles) {
+                          const std::vector<int>* tiles, ProgressiveCheckpoint* checkpoint) {
     const Camera camera = Camera::create(description.scene.camera, description.source + "#/camera");
     check_material_ids(description);
     const bool writes_image = distribution == nullptr || distribution->writes_image();
@@ -279,10 +279,11 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
                         typename std::decay_t<decltype(integrator_settings)>::Integrator;
                     const Integrator integrator(context, integrator_settings);
                     if (progressive.enabled()) {
-                        result.progressive = render_progressive(
-                            camera, integrator, settings, progressive,
-                            static_cast<uint32_t>(progressive.max_spp), target,
-                            show_progress && writes_image, distribution, &result.processes);
+                        result.progressive =
+                            render_progressive(camera, integrator, settings, progressive,
+                                               static_cast<uint32_t>(progressive.max_spp), target,
+                                               show_progress && writes_image, distribution,
+                                               &result.processes, checkpoint);
                         result.counters = result.progressive->counters;
                         return;
                     }

@@ -14,6 +14,8 @@
 
 namespace rayo {
 
+class ProgressiveCheckpoint;  // core/progressive.h
+
 struct RenderResult {
     Film film{1, 1};
     RayCounters counters;
@@ -47,9 +49,12 @@ struct RenderResult {
 // `tiles` (when given; not with a distribution) lists the tiles to render, e.g. those a resumed
 // render still misses (core/image/partial_render.h): the progress bar and its ETA count only
 // them, and an empty list renders nothing (the sink gets begin() and finish()).
+// `checkpoint` (a progressive render in one process) starts the passes from those an earlier
+// run kept and keeps each finished pass (core/image/pass_journal.h, --resume).
 RenderResult render_scene(const SceneDescription& description, int threads, bool show_progress,
                           TileSink* sink = nullptr, TileDistribution* distribution = nullptr,
-                          const std::vector<int>* tiles = nullptr);
+                          const std::vector<int>* tiles = nullptr,
+                          ProgressiveCheckpoint* checkpoint = nullptr);
 
 // The thread count TBB uses when none is given.
 int default_thread_count();

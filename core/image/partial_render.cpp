@@ -63,29 +63,6 @@ std::string running_now_message(const std::string& path) {
            "' is locked); wait for it to end, or write to another output";
 }
 
-// "name: value" lines (a value's line breaks become spaces).
-std::string fingerprint_text(const RenderFingerprint& fingerprint) {
-    std::string text;
-    for (const auto& [name, value] : fingerprint) {
-        std::string line = value;
-        for (char& c : line)
-            if (c == '\n' || c == '\r' || c == '\0') c = ' ';
-        text += name + ": " + line + "\n";
-    }
-    return text;
-}
-
-RenderFingerprint parse_fingerprint(const std::string& text) {
-    RenderFingerprint entries;
-    std::istringstream lines(text);
-    for (std::string line; std::getline(lines, line);) {
-        const size_t colon = line.find(": ");
-        if (colon != std::string::npos)
-            entries.emplace_back(line.substr(0, colon), line.substr(colon + 2));
-    }
-    return entries;
-}
-
 // All `bytes` at `offset` through pread or pwrite (retried after EINTR and short counts); false
 // on an error or at the end of the file.
 template <typename Io, typename Byte>
@@ -110,6 +87,50 @@ bool write_at(int fd, const void* data, size_t bytes, size_t offset) {
 }
 
 }  // namespace
+
+// "name: value" lines (a value's line breaks become spaces).
+std::string fingerprint_text(const RenderFingerprint& fingerprint) {
+    std::string text;
+    for (const auto& [name, value] : fingerprint) {
+        std::string line = value;
+        for (char& c : line)
+            if (c == '\n' || c == '\r' || c == '\0') c = ' ';
+        text += name + ": " + line + "\n";
+    }
+    return text;
+}
+
+RenderFingerprint parse_fingerprint(const std::string& text) {
+    RenderFingerprint entries;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+        const size_t colon = line.find(": ");
+        if (colon != std::string::npos)
+            entries.emplace_back(line.substr(0, colon), line.substr(colon + 2));
+    }
+    return entries;
+}
+
+std::string fingerprint_differences(const RenderFingerprint& before, const RenderFingerprint& now,
+                                    const std::string& kept) {
+    std::string differences;
+    auto value_in = [](const RenderFingerprint& f, const std::string& name) -> const std::string* {
+        for (const auto& [key, value] : f)
+            if (key == name) return &value;
+        return nullptr;
+    };
+    for (const auto& [name, value] : now) {
+        const std::string* old = value_in(before, name);
+        if (old && *old == value) continue;
+        differences += "\n  " + name + ": " + (old ? *old : "(not recorded)") + " in the " + kept +
+                       ", " + value + " now";
+    }
+    for (const auto& [name, value] : before) {
+        if (!value_in(now, name))
+            differences += "\n  " + name + ": " + value + " in the " + kept + ", (none) now";
+    }
+    return differences;
+}
 
 std::string partial_render_path(const std::string& output) {
     return output + ".rayo-partial";
@@ -223,22 +244,7 @@ std::unique_ptr<PartialRender> PartialRender::resume(const std::string& output,
     }
     saved.resize(std::strlen(saved.c_str()));
     const RenderFingerprint before = parse_fingerprint(saved.substr(saved.find('\n') + 1));
-    std::string differences;
-    auto value_in = [](const RenderFingerprint& f, const std::string& name) -> const std::string* {
-        for (const auto& [key, value] : f)
-            if (key == name) return &value;
-        return nullptr;
-    };
-    for (const auto& [name, value] : fingerprint) {
-        const std::string* old = value_in(before, name);
-        if (old && *old == value) continue;
-        differences += "\n  " + name + ": " + (old ? *old : "(not recorded)") +
-                       " in the partial render, " + value + " now";
-    }
-    for (const auto& [name, value] : before) {
-        if (!value_in(fingerprint, name))
-            differences += "\n  " + name + ": " + value + " in the partial render, (none) now";
-    }
+    const std::string differences = fingerprint_differences(before, fingerprint, "partial render");
     if (!differences.empty()) {
         ::close(p.m_fd);
         p.m_fd = -1;

@@ -37,6 +37,15 @@ using RenderFingerprint = std::vector<std::pair<std::string, std::string>>;
 // OUTPUT.rayo-partial.
 std::string partial_render_path(const std::string& output);
 
+// A fingerprint as "name: value" lines (a value's line breaks become spaces), and back.
+std::string fingerprint_text(const RenderFingerprint& fingerprint);
+RenderFingerprint parse_fingerprint(const std::string& text);
+// Every entry that differs between a fingerprint kept in a file (`kept` names the file's kind:
+// "partial render") and the render's now, a line each ("\n  spp: 1 in the partial render, 2
+// now"); empty when they match.
+std::string fingerprint_differences(const RenderFingerprint& before, const RenderFingerprint& now,
+                                    const std::string& kept);
+
 // A 64-bit checksum of `bytes` bytes (a multiple of 8): FNV-1a over 64-bit words.
 uint64_t checksum64(const void* data, size_t bytes);
 

@@ -3,6 +3,7 @@
 // values and combinations are refused before any work, with no output left.
 #include <OpenImageIO/imageio.h>
 
+#include <filesystem>
 #include <string>
 
 #include "tests/cli/cli_fixture.h"
@@ -59,7 +60,7 @@ TEST_F(ProgressiveCli, BadValuesAndCombinationsAreRefusedBeforeAnyWork) {
         {"--noise-target 0.1 --aa adaptive", "own stopping rule"},
         {"--time-limit 1 --max-spp 2", "is below one pass"},
         {"--max-spp 1", "--max-spp"},
-        {"--noise-target 0.1 --resume", "a progressive render"},
+        {"--noise-target 0.1 --resume", "--resume: no passes of a progressive render"},
         {"--noise-target 0.1 --width 8193 --height 8192",
          "is too large for a progressive render (time_limit, noise_target): at most 67108864"},
     };
@@ -69,6 +70,59 @@ TEST_F(ProgressiveCli, BadValuesAndCombinationsAreRefusedBeforeAnyWork) {
         EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << "\n" << r.output;
         EXPECT_FALSE(std::filesystem::exists(m_dir / "out.exr")) << c.args;
     }
+}
+
+// Interrupt and resume (core/image/pass_journal.h): the passes kept go on to the same bits as a
+// render never interrupted; a resume may change the stopping rule, not what decides the pixels;
+// a kept journal is not overwritten by a new render; a damaged one is refused.
+TEST_F(ProgressiveCli, AnInterruptedRenderResumesFromItsPassesToTheSameBits) {
+    write("scene.json", kScene);
+    const std::string render = "render scene.json --time-limit 1000 --pass-spp 2 --max-spp 12 ";
+    ASSERT_EQ(run(render + "-o full.exr --quiet").exit_code, 0);
+    // The first run would go on to 24 spp; its resume stops at 12.
+    const CommandResult stopped =
+        run("render scene.json --time-limit 1000 --pass-spp 2 --max-spp 24 -o part.exr "
+            "--journal-after 0",
+            "RAYO_TEST_INTERRUPT_PASSES=2");
+    ASSERT_EQ(stopped.exit_code, 130) << stopped.output;
+    EXPECT_NE(stopped.output.find("kept in part.exr.rayo-passes: resume with --resume"),
+              std::string::npos)
+        << stopped.output;
+    EXPECT_FALSE(std::filesystem::exists(m_dir / "part.exr"));
+    ASSERT_TRUE(std::filesystem::exists(m_dir / "part.exr.rayo-passes"));
+
+    const CommandResult other = run(
+        "render scene.json --time-limit 1000 --pass-spp 4 --max-spp 12 -o part.exr --resume");
+    EXPECT_EQ(other.exit_code, 1) << other.output;
+    EXPECT_NE(other.output.find("pass spp: 2 in the kept passes, 4 now"), std::string::npos)
+        << other.output;
+    const CommandResult again = run(render + "-o part.exr");
+    EXPECT_EQ(again.exit_code, 1) << again.output;
+    EXPECT_NE(again.output.find("continue it with --resume"), std::string::npos) << again.output;
+    EXPECT_FALSE(std::filesystem::exists(m_dir / "part.exr"));
+
+    // A lower cap than the first run's: the stopping rule is not in the fingerprint.
+    const CommandResult resumed =
+        run("render scene.json --time-limit 1000 --pass-spp 2 --max-spp 12 -o part.exr --resume");
+    ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+    EXPECT_NE(resumed.output.find("rayo: resuming part.exr.rayo-passes: "), std::string::npos)
+        << resumed.output;
+    EXPECT_NE(resumed.output.find(" 12spp (6 passes, noise "), std::string::npos)
+        << resumed.output;
+    EXPECT_EQ(read_pixels("part.exr"), read_pixels("full.exr"));
+    EXPECT_FALSE(std::filesystem::exists(m_dir / "part.exr.rayo-passes"));
+
+    // A journal cut short is refused, and left for the user to remove.
+    ASSERT_EQ(run(render + "-o cut.exr --journal-after 0", "RAYO_TEST_INTERRUPT_PASSES=1")
+                  .exit_code,
+              130);
+    const auto journal = m_dir / "cut.exr.rayo-passes";
+    std::filesystem::resize_file(journal, std::filesystem::file_size(journal) - 8);
+    const CommandResult damaged = run(render + "-o cut.exr --resume");
+    EXPECT_EQ(damaged.exit_code, 1) << damaged.output;
+    EXPECT_NE(damaged.output.find("bytes of sums where its header says"), std::string::npos)
+        << damaged.output;
+    EXPECT_FALSE(std::filesystem::exists(m_dir / "cut.exr"));
 }
 
 TEST_F(ProgressiveCli, HelpListsTheProgressiveSettingsAsOffByDefault) {
