@@ -1529,6 +1529,11 @@ int run_bench_suite(const std::vector<std::string>& args, std::ostream& out) {
     const SuiteOptions& options = parsed.options;
     const bool write_nff = parsed.write_nff;
     if (write_nff && options.dir.empty()) throw UsageError("bench suite: --write-nff needs -o DIR");
+    if (options.spd_procedure && parsed.size_given) {
+        throw UsageError(
+            "bench suite: --size with --procedure spd: the procedure renders each database at "
+            "its default size");
+    }
     if (write_nff) {
         write_spd_nff_files(options, out);
         return 0;
@@ -1539,13 +1544,15 @@ int run_bench_suite(const std::vector<std::string>& args, std::ostream& out) {
     if (!options.dir.empty()) {
         write_suite_files(options, rows, machine);
         out << "wrote suite.csv, suite.json, suite.md, suite.gp and suite.png in " << options.dir
-    if (options.spd_procedure && parsed.size_given) {
-        throw UsageError(
-            "bench suite: --size with --procedure spd: the procedure renders each database at "
-            "its default size");
-    }
             << "\n";
     }
+    if (!options.spd_procedure) return 0;
+    const std::vector<std::string> failures = spd_count_failures(rows);
+    for (const std::string& failure : failures) {
+        out << "rayo bench suite --procedure spd: FAILED: " << failure << "\n";
+    }
+    if (!failures.empty()) return 1;
+    out << "rayo bench suite --procedure spd: every ray count within 10% of the SPD Readme's\n";
     return 0;
 }
 
@@ -1556,13 +1563,6 @@ int run_bench_convergence(const std::vector<std::string>& args, std::ostream& ou
         if (has_scene) throw UsageError("bench convergence: unexpected argument '" + word + "'");
         options.scene = word;
         has_scene = true;
-    if (!options.spd_procedure) return 0;
-    const std::vector<std::string> failures = spd_count_failures(rows);
-    for (const std::string& failure : failures) {
-        out << "rayo bench suite --procedure spd: FAILED: " << failure << "\n";
-    }
-    if (!failures.empty()) return 1;
-    out << "rayo bench suite --procedure spd: every ray count within 10% of the SPD Readme's\n";
     });
     if (options.dir.empty()) throw UsageError("bench convergence: -o DIR is required");
     check_convergence_spp(options.max_spp, options.reference_spp);
