@@ -80,4 +80,12 @@ long long embree_bytes_in_use() {
     return g_bytes.load();
 }
 
+int embree_native_packet_width() {
+    const RTCDevice device = embree_device();
+    if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED)) return 16;
+    if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED)) return 8;
+    if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_NATIVE_RAY4_SUPPORTED)) return 4;
+    return 1;
+}
+
 }  // namespace rayo

@@ -25,4 +25,9 @@ void fail_on_embree_error(const char* what);
 // Bytes Embree holds for all scenes alive in the process (its memory monitor).
 long long embree_bytes_in_use();
 
+// The widest ray packet the device's kernels take natively, as rtcGetDeviceProperty reports it
+// under kEmbreeDeviceConfig's cap: 16 (AVX-512), 8 (AVX or AVX2), 4 (SSE), or 1. Embree 3 has no
+// call that names the ISA it chose; this is its vector width.
+int embree_native_packet_width();
+
 }  // namespace rayo

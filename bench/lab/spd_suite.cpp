@@ -22,6 +22,7 @@
 #include "bench/lab/spd_scenes.h"
 #include "bench/lab/study_files.h"
 #include "bench/lab/study_stop.h"
+#include "core/embree_device.h"
 #include "core/error.h"
 
 namespace rayo {
@@ -149,15 +150,14 @@ MachineInfo machine_info() {
     if (m.cpu.empty()) m.cpu = "unknown";
     char host[256] = {};
     m.host_name = gethostname(host, sizeof host - 1) == 0 ? host : "unknown";
-    m.isa = "unknown";
-    // Not avx512: the device stops at AVX2 (core/embree_device.h).
-    for (const auto& [flag, isa] : {std::pair{"avx2", "avx2"}, std::pair{"avx", "avx"},
-                                    std::pair{"sse4_2", "sse4.2"}, std::pair{"sse2", "sse2"}}) {
-        if (flags.find(std::string(" ") + flag + " ") != std::string::npos) {
-            m.isa = isa;
-            break;
-        }
-    }
+    const auto has = [&](const char* flag) {
+        return flags.find(std::string(" ") + flag + " ") != std::string::npos;
+    };
+    m.embree_packet = embree_native_packet_width();
+    m.isa = m.embree_packet >= 16  ? "avx512"
+            : m.embree_packet == 8 ? (has("avx2") ? "avx2" : "avx")
+            : m.embree_packet == 4 ? (has("sse4_2") ? "sse4.2" : "sse2")
+                                   : "scalar";
     return m;
 }
 
@@ -378,6 +378,7 @@ std::string suite_json(const SuiteOptions& options, const std::vector<SuiteRow>&
          << ",\n    \"num_cpus\": " << machine.cores << ",\n    \"mhz_per_cpu\": " << machine.mhz
          << ",\n    \"cpu_model\": " << json_string(machine.cpu)
          << ",\n    \"embree_isa\": " << json_string(machine.isa)
+         << ",\n    \"embree_native_packet\": " << machine.embree_packet
          << ",\n    \"threads\": " << threads
          << ",\n    \"procedure\": " << json_string(options.spd_procedure ? "spd" : "none")
          << ",\n    \"repetitions\": " << std::max(1, options.repetitions)

@@ -26,12 +26,13 @@ struct SuiteOptions {
     int repetitions = 1;  // renders of each scene; the table shows the median, min and max
 };
 
-// The machine the suite ran on: /proc/cpuinfo's model name, the cores TBB uses, and the widest
-// vector ISA in the CPU flags that rayo's Embree device uses (avx2, avx, sse4.2, sse2: the
-// device stops at AVX2, core/embree_device.h).
+// The machine the suite ran on: /proc/cpuinfo's model name, the cores TBB uses, and the ISA of
+// rayo's Embree device: its native packet width (core/embree_device.h: 16 avx512, 8 avx2 or
+// avx, 4 sse4.2 or sse2; the device stops at AVX2), the CPU's flags telling the two apart.
 struct MachineInfo {
     std::string cpu, isa;
     int cores = 0;
+    int embree_packet = 0;  // embree_native_packet_width()
     int mhz = 0;            // /proc/cpuinfo's "cpu MHz" of the first CPU (0: unknown)
     std::string host_name;  // gethostname
 };

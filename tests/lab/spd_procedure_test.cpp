@@ -144,6 +144,10 @@ TEST(SpdSuiteJson, HasGoogleBenchmarksShape) {
         EXPECT_TRUE(context.at(key).is_string()) << key;
     }
     EXPECT_GE(context.at("num_cpus").get<int>(), 1);
+    // The device's packet width, and the ISA named from it: at most AVX2's 8 (the device's cap).
+    const int packet = context.at("embree_native_packet").get<int>();
+    EXPECT_TRUE(packet == 4 || packet == 8) << packet;
+    EXPECT_EQ(context.at("embree_isa") == "avx2" || context.at("embree_isa") == "avx", packet == 8);
     EXPECT_EQ(context.at("threads").get<int>(), 1);
     EXPECT_EQ(context.at("procedure"), "spd");
     // Per scene: two iterations, then mean, median, stddev, min and max.
