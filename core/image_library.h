@@ -17,7 +17,7 @@
 namespace rayo {
 
 // Bumped whenever a class below changes.
-constexpr int kImageLibraryAbi = 4;
+constexpr int kImageLibraryAbi = 5;
 
 enum class PixelType { Float, Half, UInt8, UInt16 };
 
@@ -84,6 +84,8 @@ struct ImageHeader {
     int bytes_per_channel = 1;  // as stored: 1 for 8-bit, 2 for 16-bit and half, 4 for float
     bool tiled = false;         // tiles the texture system reads one at a time (tiled EXR, TIFF)
     bool mipmapped = false;     // MIP levels in the file (maketx output)
+    bool floating = false;      // float or half channels
+    bool alpha = false;         // an alpha channel (or four channels)
 };
 
 enum class TextureWrapMode { Periodic, Clamp, Mirror };
@@ -101,10 +103,11 @@ class TextureCache {
     virtual bool floating_point(Handle handle) const = 0;
     // Whether the image has an alpha channel (colours are read unassociated: not premultiplied).
     virtual bool has_alpha(Handle handle) const = 0;
-    // Filtered RGBA at (s, t) with the footprint's derivatives; `fill` for missing channels.
+    // Filtered RGBA at (s, t) with the footprint's derivatives, trilinear between MIP levels,
+    // bilinear within each or, with `bicubic`, bicubic; `fill` for missing channels.
     virtual void lookup(Handle handle, TextureWrapMode swrap, TextureWrapMode twrap, float fill,
-                        float s, float t, float dsdx, float dtdx, float dsdy, float dtdy,
-                        float rgba[4]) const = 0;
+                        bool bicubic, float s, float t, float dsdx, float dtdx, float dsdy,
+                        float dtdy, float rgba[4]) const = 0;
     virtual int64_t memory_used() const = 0;
     virtual int64_t image_bytes() const = 0;
     // OpenImageIO's statistics text (the peak memory is read from it).
@@ -134,6 +137,12 @@ class ImageLibrary {
     // chunks of scanlines or tiles so that only the reader's own buffers grow with the image.
     virtual bool decodes(const std::string& name, const std::string& bytes,
                          std::string& error) const = 0;
+    // Every pixel of the image's first subimage (the header read_header gave: width × height ×
+    // channels values) into `out` as `type` (UInt8 or Float), colours as stored (not
+    // premultiplied by alpha); false with the reader's reason in `error` when a pixel does not
+    // decode (as decodes() would say).
+    virtual bool read_texture_pixels(const std::string& name, const std::string& bytes,
+                                     PixelType type, void* out, std::string& error) const = 0;
     // A new texture system whose cache holds at most `max_memory_mb` of decoded tiles, cutting
     // scanline images into tiles of `autotile` and building their MIP levels.
     virtual std::unique_ptr<TextureCache> create_texture_cache(float max_memory_mb,

@@ -105,6 +105,7 @@ walter-2007 ~ Walter et al|GGX ~ Walter 2007
 wavefront-obj-mtl ~ Wavefront OBJ ~
 wellons-2018 ~ Wellons|lowbias32 ~ Wellons 2018
 whitted-1980 ~ Whitted ~ Whitted 1980
+williams-1983 ~ Williams 1983|Pyramidal Parametrics ~ Williams 1983
 wilson-hilferty-1931 ~ Wilson.{1,6}Hilferty|WilsonHilferty ~ Wilson 1931, Hilferty 1931
 woop-2013 ~ Woop ~ Woop 2013, Benthin 2013, Wald 2013
 worley-1996 ~ Worley ~ Worley 1996

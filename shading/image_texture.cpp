@@ -197,7 +197,11 @@ bool image_source_readable(const ImageSource& source, std::string& error) {
     return true;
 }
 
-void check_texture_fits(const ImageSource& source, float max_memory_mb) {
+namespace {
+
+// check_texture_fits up to the decoding: the header reads, an image without tiles fits the
+// limit decoded, a PNG's chunks reach its end. Returns the header.
+ImageHeader check_texture_header(const ImageSource& source, float max_memory_mb) {
     const std::string name = cache_name(source, 0);
     std::string error;
     ImageHeader header;
@@ -225,6 +229,47 @@ void check_texture_fits(const ImageSource& source, float max_memory_mb) {
     if (!truncated.empty()) {
         throw InputError(source.name, "texture image does not decode: " + truncated);
     }
+    return header;
+}
+
+// The image's pixels decoded into a MIP map (8-bit images as bytes, the others as floats);
+// throws InputError as check_texture_fits does when a pixel does not decode.
+std::unique_ptr<MipPyramid> decode_pyramid(const ImageSource& source, const ImageHeader& header) {
+    const std::string name = cache_name(source, 0);
+    const size_t values =
+        size_t(header.width) * size_t(header.height) * size_t(std::max(header.channels, 1));
+    std::string error;
+    const auto failed = [&] {
+        return InputError(source.name,
+                          "texture image does not decode: " + with_file_name(error, name, source));
+    };
+    if (header.bytes_per_channel == 1 && !header.floating) {
+        std::vector<uint8_t> pixels(values);
+        if (!image_library().read_texture_pixels(name, source.bytes, PixelType::UInt8,
+                                                 pixels.data(), error)) {
+            throw failed();
+        }
+        return std::make_unique<MipPyramid>(header.width, header.height, header.channels,
+                                            pixels.data());
+    }
+    std::vector<float> pixels(values);
+    if (!image_library().read_texture_pixels(name, source.bytes, PixelType::Float, pixels.data(),
+                                             error)) {
+        throw failed();
+    }
+    return std::make_unique<MipPyramid>(header.width, header.height, header.channels,
+                                        pixels.data());
+}
+
+// The smallest cache OpenImageIO is given (what the MIP maps left may be less).
+constexpr float kMinCacheMB = 1.0f;
+
+}  // namespace
+
+void check_texture_fits(const ImageSource& source, float max_memory_mb) {
+    check_texture_header(source, max_memory_mb);
+    const std::string name = cache_name(source, 0);
+    std::string error;
     if (!image_library().decodes(name, source.bytes, error)) {
         throw InputError(source.name,
                          "texture image does not decode: " + with_file_name(error, name, source));
@@ -232,37 +277,77 @@ void check_texture_fits(const ImageSource& source, float max_memory_mb) {
 }
 
 struct ImageTextures::Impl {
-    // One image in the cache (the module's TextureCache reads its bytes from memory).
+    // One image: rayo's MIP map of it, or its handle in OpenImageIO's cache (which reads its
+    // bytes from memory).
     struct Entry {
         std::shared_ptr<const ImageSource> source;
+        std::unique_ptr<MipPyramid> pyramid;
         TextureCache::Handle handle = nullptr;
+        bool good = false;
         bool floating = false;
         bool alpha = false;  // has an alpha channel
     };
     // One material's use of an image.
     struct Use {
+        const MipPyramid* pyramid = nullptr;
         TextureCache::Handle handle = nullptr;
+        TextureWrap wrap_s = TextureWrap::Repeat, wrap_t = TextureWrap::Repeat;
         TextureWrapMode swrap = TextureWrapMode::Periodic, twrap = TextureWrapMode::Periodic;
         bool srgb = false;
         bool alpha = false;
         glm::mat3 transform{1.0f};
+        // The footprint's scale through the transform: the longer of its axes' images (a MIP
+        // map's lookup is isotropic; the longer axis keeps either from aliasing).
+        float footprint_scale = 1.0f;
+        bool used() const { return pyramid != nullptr || handle != nullptr; }
     };
 
     float limit_mb = 0.0f;
+    TextureFilter filter = TextureFilter::Bilinear;
+    int64_t pyramid_bytes = 0;
     std::vector<Entry> entries;
     std::map<const ImageSource*, size_t> index_of;
     std::vector<std::array<Use, kSlotCount>> uses;  // per material, per Slot
     std::unique_ptr<TextureCache> system;           // last: destroyed before the bytes it reads
 
+    // What is left of the limit for OpenImageIO's cache once the MIP maps are made.
+    float cache_mb() const {
+        const double left = double(limit_mb) - double(pyramid_bytes) / (1024.0 * 1024.0);
+        return std::max(kMinCacheMB, static_cast<float>(left));
+    }
+
     size_t add(const std::shared_ptr<const ImageSource>& source) {
         const auto found = index_of.find(source.get());
         if (found != index_of.end()) return found->second;
-        check_texture_fits(*source, limit_mb);
+        const ImageHeader header = check_texture_header(*source, limit_mb);
         Entry entry;
         entry.source = source;
-        entry.handle = system->add(cache_name(*source, entries.size()), source->bytes);
-        entry.floating = system->floating_point(entry.handle);
-        entry.alpha = system->has_alpha(entry.handle);
+        const size_t bytes = MipPyramid::bytes_for(
+            header.width, header.height, !(header.bytes_per_channel == 1 && !header.floating));
+        const double left = double(limit_mb) * 1024.0 * 1024.0 - double(pyramid_bytes);
+        // A MIP map while they fit (and before any image went to the cache, whose limit is what
+        // was left when it was made); volumes (depth > 1) stay with OpenImageIO.
+        if (!system && header.depth == 1 && double(bytes) <= left) {
+            entry.pyramid = decode_pyramid(*source, header);
+            pyramid_bytes += static_cast<int64_t>(entry.pyramid->bytes());
+            entry.good = true;
+            entry.floating = header.floating;
+            entry.alpha = header.alpha;
+        } else {
+            std::string error;
+            const std::string name = cache_name(*source, 0);
+            if (!image_library().decodes(name, source->bytes, error)) {
+                throw InputError(source->name, "texture image does not decode: " +
+                                                   with_file_name(error, name, *source));
+            }
+            // PNG and JPEG are scanline images: cut into 64² tiles so that the memory limit
+            // bounds what is held, with their MIP levels built in the cache.
+            if (!system) system = image_library().create_texture_cache(cache_mb(), /*autotile=*/64);
+            entry.handle = system->add(cache_name(*source, entries.size()), source->bytes);
+            entry.good = system->good(entry.handle);
+            entry.floating = system->floating_point(entry.handle);
+            entry.alpha = system->has_alpha(entry.handle);
+        }
         index_of.emplace(source.get(), entries.size());
         entries.push_back(std::move(entry));
         return entries.size() - 1;
@@ -272,26 +357,29 @@ struct ImageTextures::Impl {
         Use use;
         if (!map.used()) return use;
         const Entry& entry = entries[add(map.image)];
-        if (!system->good(entry.handle)) return use;  // unreadable: the loaders warned
+        if (!entry.good) return use;  // unreadable: the loaders warned
+        use.pyramid = entry.pyramid.get();
         use.handle = entry.handle;
+        use.wrap_s = map.wrap_s;
+        use.wrap_t = map.wrap_t;
         use.swrap = wrap_mode(map.wrap_s);
         use.twrap = wrap_mode(map.wrap_t);
         use.srgb = map.encoding == TextureEncoding::Srgb ||
                    (map.encoding == TextureEncoding::Auto && !entry.floating);
         use.alpha = entry.alpha;
         use.transform = map.transform;
+        use.footprint_scale = std::max(glm::length(glm::vec2(map.transform[0])),
+                                       glm::length(glm::vec2(map.transform[1])));
         return use;
     }
 };
 
-ImageTextures::ImageTextures(const std::vector<Material>& materials, float max_memory_mb)
+ImageTextures::ImageTextures(const std::vector<Material>& materials, float max_memory_mb,
+                             TextureFilter filter)
     : m_impl(std::make_unique<Impl>()) {
     Impl& impl = *m_impl;
-    // A private system: its cache limit and statistics are this render's. PNG and JPEG are
-    // scanline images: cut into 64² tiles so that the memory limit bounds what is held, with
-    // their MIP levels built in the cache (filtered minification).
     impl.limit_mb = max_memory_mb;
-    impl.system = image_library().create_texture_cache(max_memory_mb, /*autotile=*/64);
+    impl.filter = filter;
     impl.uses.resize(materials.size());
     for (size_t m = 0; m < materials.size(); ++m) {
         const MaterialImages& images = materials[m].images;
@@ -311,7 +399,7 @@ ImageTextures::~ImageTextures() = default;
 
 bool ImageTextures::has(uint32_t material, Slot slot) const {
     return material < m_impl->uses.size() &&
-           m_impl->uses[material][static_cast<size_t>(slot)].handle != nullptr;
+           m_impl->uses[material][static_cast<size_t>(slot)].used();
 }
 
 bool ImageTextures::has_alpha(uint32_t material, Slot slot) const {
@@ -321,15 +409,25 @@ bool ImageTextures::has_alpha(uint32_t material, Slot slot) const {
 glm::vec4 ImageTextures::lookup(uint32_t material, Slot slot, const glm::vec2& uv,
                                 float width) const {
     const Impl::Use& use = m_impl->uses[material][static_cast<size_t>(slot)];
-    if (use.handle == nullptr) return glm::vec4(1.0f);
+    if (!use.used()) return glm::vec4(1.0f);
     const glm::vec3 st = use.transform * glm::vec3(uv, 1.0f);
-    // The footprint's axes through the transform (its linear part scales and rotates them).
-    const glm::vec2 dx = glm::vec2(use.transform * glm::vec3(width, 0.0f, 0.0f));
-    const glm::vec2 dy = glm::vec2(use.transform * glm::vec3(0.0f, width, 0.0f));
     float texel[4] = {1.0f, 1.0f, 1.0f, 1.0f};
-    // fill 1: the alpha of images without one.
-    m_impl->system->lookup(use.handle, use.swrap, use.twrap, /*fill=*/1.0f, st.x, st.y, dx.x, dx.y,
-                           dy.x, dy.y, texel);
+    if (use.pyramid) {
+        const glm::vec4 t = use.pyramid->lookup(st.x, st.y, width * use.footprint_scale, use.wrap_s,
+                                                use.wrap_t, m_impl->filter);
+        texel[0] = t.x;
+        texel[1] = t.y;
+        texel[2] = t.z;
+        texel[3] = t.w;
+    } else {
+        // The footprint's axes through the transform (its linear part scales and rotates them).
+        const glm::vec2 dx = glm::vec2(use.transform * glm::vec3(width, 0.0f, 0.0f));
+        const glm::vec2 dy = glm::vec2(use.transform * glm::vec3(0.0f, width, 0.0f));
+        // fill 1: the alpha of images without one.
+        m_impl->system->lookup(use.handle, use.swrap, use.twrap, /*fill=*/1.0f,
+                               m_impl->filter == TextureFilter::Bicubic, st.x, st.y, dx.x, dx.y,
+                               dy.x, dy.y, texel);
+    }
     if (use.srgb) {
         for (int c = 0; c < 3; ++c) texel[c] = srgb_to_linear(texel[c]);
     }
@@ -346,12 +444,18 @@ ImageTextureStats ImageTextures::stats() const {
     out.limit_mb = m_impl->limit_mb;
     for (const auto& entry : m_impl->entries) {
         out.encoded_bytes += static_cast<int64_t>(entry.source->bytes.size());
+        if (entry.pyramid) ++out.mip_mapped;
     }
-    out.memory_used = m_impl->system->memory_used();
-    out.image_bytes = m_impl->system->image_bytes();
-    // OpenImageIO prints its peak rounded (and counts pixel memory only): never below what
-    // the cache holds now.
-    out.memory_peak = std::max(peak_cache_memory(m_impl->system->statistics()), out.memory_used);
+    // The MIP maps are held from the start to the end of the render.
+    out.memory_used = out.image_bytes = out.memory_peak = m_impl->pyramid_bytes;
+    if (m_impl->system) {
+        const int64_t cache_used = m_impl->system->memory_used();
+        out.memory_used += cache_used;
+        out.image_bytes += m_impl->system->image_bytes();
+        // OpenImageIO prints its peak rounded (and counts pixel memory only): never below what
+        // the cache holds now.
+        out.memory_peak += std::max(peak_cache_memory(m_impl->system->statistics()), cache_used);
+    }
     return out;
 }
 

@@ -1,8 +1,10 @@
 #pragma once
 // Image textures (docs/textures.md, "Image textures"): the images a material names (glTF
 // baseColorTexture/emissiveTexture/metallicRoughnessTexture/occlusionTexture/normalTexture, MTL
-// map_Kd/map_Ks/map_Ke/norm/map_bump/map_d, JSON {"image": file}) and one
-// OpenImageIO TextureSystem per render that filters them (mip-mapped, cached, memory bounded).
+// map_Kd/map_Ks/map_Ke/norm/map_bump/map_d, JSON {"image": file}), decoded once when the render
+// starts into rayo's own MIP maps (shading/mip_pyramid.h) while they fit the texture memory
+// limit, and the rest through one OpenImageIO TextureSystem per render (mip-mapped, cached,
+// bounded by what the MIP maps left of the limit).
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "shading/image_map.h"
+#include "shading/mip_pyramid.h"
 
 namespace rayo {
 
@@ -20,30 +23,35 @@ constexpr float kDefaultTextureCacheMB = 256.0f;
 
 struct ImageTextureStats {
     size_t textures = 0;        // distinct images
-    int64_t memory_used = 0;    // bytes of decoded tiles held by the cache at the end
-    int64_t memory_peak = 0;    // most bytes held at once (OIIO's peak tile memory)
+    size_t mip_mapped = 0;      // of which held as rayo's MIP maps (the rest in OIIO's cache)
+    int64_t memory_used = 0;    // bytes of MIP maps and decoded tiles held at the end
+    int64_t memory_peak = 0;    // most bytes held at once (the MIP maps + OIIO's peak tiles)
     int64_t encoded_bytes = 0;  // the images' file bytes kept in memory
-    float limit_mb = 0.0f;      // the cache's max_memory_MB
-    int64_t image_bytes = 0;    // the images' decoded size (all MIP levels OIIO made)
+    float limit_mb = 0.0f;      // the texture memory limit (--texture-cache)
+    int64_t image_bytes = 0;    // the images' decoded size (all MIP levels)
 };
 
 // The texture system of one render: every material's images registered once (images shared by
 // materials are one texture), looked up by the material's index. Thread-safe: lookups from any
-// number of threads (OpenImageIO keeps per-thread state itself).
+// number of threads (the MIP maps are read-only; OpenImageIO keeps per-thread state itself).
 class ImageTextures {
   public:
-    // Registers the images of `materials` (indexed as the scene's material ids) in a new
-    // TextureSystem whose cache holds at most `max_memory_mb` of decoded tiles, each image
-    // checked first (check_texture_fits: throws InputError).
-    ImageTextures(const std::vector<Material>& materials, float max_memory_mb);
+    // Registers the images of `materials` (indexed as the scene's material ids), each checked
+    // first as check_texture_fits does (throws InputError). In order, each image whose MIP map
+    // (MipPyramid::bytes_for) fits what is left of `max_memory_mb` is decoded into one; from the
+    // first that does not, the images go to a TextureSystem whose cache holds at most what is
+    // left (at least 1 MB). `filter`: within a MIP level, bilinear or bicubic.
+    ImageTextures(const std::vector<Material>& materials, float max_memory_mb,
+                  TextureFilter filter = TextureFilter::Bilinear);
     ~ImageTextures();
     ImageTextures(const ImageTextures&) = delete;
     ImageTextures& operator=(const ImageTextures&) = delete;
 
     // Filtered RGBA of `map` of material `material` at texture coordinates `uv` (before the
     // map's transform) with the footprint `width` in uv units (isotropic: the pixel's extent
-    // on the surface in texture coordinates); RGB decoded to linear when the image is sRGB.
-    // Alpha is 1 for images without one.
+    // on the surface in texture coordinates; 0: the image itself, magnified); trilinear between
+    // MIP levels; RGB decoded to linear when the image is sRGB. Alpha is 1 for images without
+    // one.
     enum class Slot {
         Base,
         Specular,

@@ -353,6 +353,7 @@ const RenderOption kRenderOptions[] = {
      "radiosity: write the unshot energy after every shot (CSV)", nullptr, text_rule(),
      [](RenderArgs& r, const FlagValue& v) { r.gi_log = v.text; }},
     {"--texture-cache"},
+    {"--texture-filter"},
     {"--display", OptionUse::Output, "D", "OCIO display and view for PNG/TIFF/JPEG",
      "config defaults", text_rule(),
      [](RenderArgs& r, const FlagValue& v) { r.output_options.display = v.text; }},

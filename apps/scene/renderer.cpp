@@ -165,7 +165,8 @@ RenderResult render_scene(const SceneDescription& description, int threads, bool
     const auto& materials = description.shading.materials;
     if (std::any_of(materials.begin(), materials.end(),
                     [](const Material& m) { return m.images.any(); })) {
-        images = std::make_unique<ImageTextures>(materials, description.settings.texture_cache_mb);
+        images = std::make_unique<ImageTextures>(materials, description.settings.texture_cache_mb,
+                                                 description.settings.texture_filter);
     }
     const MaterialCutouts cutouts(materials, images.get());
 

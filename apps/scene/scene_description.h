@@ -16,6 +16,7 @@
 #include "core/sphere_method.h"
 #include "core/tile_grid.h"
 #include "shading/integrators/integrator.h"
+#include "shading/mip_pyramid.h"
 #include "shading/radiosity.h"
 #include "shading/shading_scene.h"
 
@@ -51,6 +52,9 @@ struct RenderSettings {
     // The image-texture cache's limit ("texture_cache_mb", --texture-cache): decoded tiles
     // held at once by the render's TextureSystem (shading/image_texture.h).
     float texture_cache_mb = kDefaultTextureCacheMB;
+    // The image textures' filter within a MIP level ("texture_filter", --texture-filter):
+    // bilinear, or bicubic when asked (shading/mip_pyramid.h).
+    TextureFilter texture_filter = TextureFilter::Bilinear;
     // Passes until a time or a noise level ("time_limit", "noise_target", "pass_spp",
     // "max_spp"; core/progressive.h), in place of spp.
     ProgressiveSettings progressive;
@@ -104,6 +108,12 @@ struct RenderSettings {
                 "image textures: decoded tiles held at once, MB (docs/textures.md)",
                 "--texture-cache"},
                texture_cache_mb, 1.0, 1e6);
+        f.choice({"texture_filter",
+                  "image textures: the filter within a MIP level, bilinear (default) or bicubic "
+                  "(smoother magnified, 4x4 texels; docs/textures.md)",
+                  "--texture-filter"},
+                 texture_filter,
+                 {{"bilinear", TextureFilter::Bilinear}, {"bicubic", TextureFilter::Bicubic}});
         f.choice({"sphere_math", "stable (default), seed (seed 000's algebraic form) or double"},
                  sphere_math,
                  {{"stable", SphereMath::Stable},

@@ -146,13 +146,18 @@ class OiioTextureCache : public TextureCache {
         const OIIO::ImageSpec* spec = m_system->imagespec(texture_handle(handle), nullptr);
         return spec != nullptr && (spec->alpha_channel >= 0 || spec->nchannels == 4);
     }
-    void lookup(Handle handle, TextureWrapMode swrap, TextureWrapMode twrap, float fill, float s,
-                float t, float dsdx, float dtdx, float dsdy, float dtdy,
+    void lookup(Handle handle, TextureWrapMode swrap, TextureWrapMode twrap, float fill,
+                bool bicubic, float s, float t, float dsdx, float dtdx, float dsdy, float dtdy,
                 float rgba[4]) const override {
         OIIO::TextureOpt options;
         options.swrap = oiio_wrap(swrap);
         options.twrap = oiio_wrap(twrap);
         options.fill = fill;
+        // rayo's own MIP maps' filter (shading/mip_pyramid.h): trilinear, bilinear within a
+        // level unless bicubic is asked for.
+        options.mipmode = OIIO::TextureOpt::MipModeTrilinear;
+        options.interpmode =
+            bicubic ? OIIO::TextureOpt::InterpBicubic : OIIO::TextureOpt::InterpBilinear;
         m_system->texture(texture_handle(handle), m_system->get_perthread_info(), options, s, t,
                           dsdx, dtdx, dsdy, dtdy, 4, rgba);
     }
@@ -177,10 +182,11 @@ class OiioTextureCache : public TextureCache {
 // `bytes` opened as an image through an in-memory proxy (which must outlive the input).
 std::unique_ptr<OIIO::ImageInput> open_memory(const std::string& name,
                                               OIIO::Filesystem::IOMemReader& memory,
-                                              std::string& error) {
+                                              std::string& error, bool unassociated = false) {
     OIIO::ImageSpec config;
     void* proxy = &memory;
     config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    if (unassociated) config.attribute("oiio:UnassociatedAlpha", 1);
     auto input = OIIO::ImageInput::open(name, &config);
     if (!input) error = OIIO::geterror();
     return input;
@@ -258,6 +264,8 @@ class OiioImageLibrary : public ImageLibrary {
         header.channels = spec.nchannels;
         header.bytes_per_channel = static_cast<int>(spec.format.basesize());
         header.tiled = spec.tile_width > 0;
+        header.floating = spec.format.is_floating_point();
+        header.alpha = spec.alpha_channel >= 0 || spec.nchannels == 4;
         header.mipmapped = input->seek_subimage(0, 1);
         input->close();
         return true;
@@ -296,7 +304,34 @@ class OiioImageLibrary : public ImageLibrary {
         return false;
     }
 
+    static bool read_texture_pixels_or_throw(const std::string& name, const std::string& bytes,
+                                             PixelType type, void* out, std::string& error) {
+        OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+        // Colour as stored, not premultiplied by alpha, as the texture cache reads it.
+        std::unique_ptr<OIIO::ImageInput> input =
+            open_memory(name, memory, error, /*unassociated=*/true);
+        if (!input) return false;
+        const OIIO::ImageSpec spec = input->spec();
+        const bool ok = input->read_image(0, 0, 0, spec.nchannels, oiio_type(type), out);
+        // As in decodes(): libpng's errors may come as a message beside pixels.
+        const std::string message = input->geterror();
+        input->close();
+        if (ok && message.empty()) return true;
+        error = message.empty() ? "the image does not decode" : message;
+        return false;
+    }
+
   public:
+    bool read_texture_pixels(const std::string& name, const std::string& bytes, PixelType type,
+                             void* out, std::string& error) const override {
+        try {
+            return read_texture_pixels_or_throw(name, bytes, type, out, error);
+        } catch (const std::exception& e) {
+            error = std::string("the image's reader failed: ") + e.what();
+            return false;
+        }
+    }
+
     std::unique_ptr<TextureCache> create_texture_cache(float max_memory_mb,
                                                        int autotile) const override {
         return std::make_unique<OiioTextureCache>(max_memory_mb, autotile);
