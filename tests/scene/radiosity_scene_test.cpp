@@ -236,7 +236,7 @@ SceneDescription room_with_block(bool block_inward, const std::string& block) {
       "camera": {"eye": [0.45, 0.15, 0.05], "look_at": [0.45, 0.15, 0.4], "vfov": 20,
                  "width": 4, "height": 4},
       "render": {"gi": "radiosity"}, "ambient_light": 0,
-      "radiosity": {"patch_size": 0.25, "threshold": 1e-3, "rays": 64},
+      "radiosity": {"patch_size": 0.25, "threshold": 1e-2, "rays": 16},
       "materials": {"white": {"kd": 0.5, "ka": 0}, "block": )" +
                 block + R"(,
                     "light": {"kd": 0, "ka": 0, "emission": 10, "double_sided": false}},
@@ -259,7 +259,7 @@ TEST(RadiosityScene, ABlockWoundInwardIsLitLikeOneWoundOutward) {
         SCOPED_TRACE(std::to_string(x) + "," + std::to_string(y));
         const float lit = out.film.rgb(x, y).x;
         EXPECT_GT(lit, 0.05f);
-        EXPECT_NEAR(in.film.rgb(x, y).x, lit, 0.05f * lit);  // measured: within 2%
+        EXPECT_NEAR(in.film.rgb(x, y).x, lit, 0.05f * lit);  // measured: within 2.7%
         EXPECT_EQ(one_sided.film.rgb(x, y).x, 0.0f);
     }
 }
