@@ -53,6 +53,7 @@ duff-2017 ~ Duff et al ~ Duff 2017
 fnv-1a ~ FNV-1a ~
 fresnel-1823 ~ Fresnel 1823|Fresnel equations|Fresnel reflectance ~ Fresnel 1823
 frisvad-2012 ~ Frisvad ~ Frisvad 2012
+geomview-off ~ geomview-off|Geomview's OFF ~
 gltf-2.0 ~ glTF 2\.0 ~
 gltf-pr-2392 ~ glTF#2392|glTF pull request #2392 ~
 haines-1987 ~ Haines 1987|Standard Procedural Databases ~ Haines 1987
@@ -94,10 +95,12 @@ schlick-1994 ~ Schlick ~ Schlick 1994
 shirley-1992 ~ Shirley's square-to-triangle ~ Shirley 1992
 shirley-chiu-1997 ~ Shirley.{1,6}Chiu ~ Shirley 1997, Chiu 1997
 snell-law ~ Snell ~
+stl-1989 ~ stl-1989|StereoLithography Interface ~
 sunday-2001 ~ Sunday's ~ Sunday 2001
 sutherland-1974 ~ Sutherland, Sproull|Newell's (method|normal) ~ Sutherland 1974
 taubin-1991 ~ Taubin ~ Taubin 1991
 trowbridge-reitz-1975 ~ Trowbridge ~ Trowbridge 1975, Reitz 1975
+turk-1994 ~ turk-1994|PLY Polygon File Format ~ Turk 1994
 veach-guibas-1995 ~ Veach (&|and) Guibas|power heuristic ~ Veach 1995
 veach-1997 ~ Veach ~ Veach 1997
 wallace-1989 ~ Wallace et al|Wallace, Elmquist ~ Wallace 1989
