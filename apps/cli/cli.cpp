@@ -870,7 +870,8 @@ void apply_test_interrupt(PartialRender& partial) {
     if (tiles > 0) partial.raise_after(tiles, term ? SIGTERM : SIGINT);
 }
 
-// "N images (E MB encoded, D MB decoded), cache U MB used, peak P MB, limit L MB".
+// "N image(s) (M as MIP maps; E MB encoded, D MB decoded), memory U MB used, peak P MB, limit L
+// MB": the MIP maps' bytes and OpenImageIO's cache together (shading/image_texture.h).
 std::string texture_summary(const RenderResult& r) {
     const ImageTextureStats& t = r.textures;
     const auto mb = [](int64_t bytes) {
@@ -880,10 +881,10 @@ std::string texture_summary(const RenderResult& r) {
         return text.str();
     };
     std::ostringstream text;
-    text << t.textures << " image(s) (" << mb(t.encoded_bytes) << " MB encoded, "
-         << mb(t.image_bytes) << " MB decoded), cache " << mb(t.memory_used) << " MB used, peak "
-         << mb(t.memory_peak) << " MB, limit " << std::fixed << std::setprecision(0) << t.limit_mb
-         << " MB";
+    text << t.textures << " image(s) (" << t.mip_mapped << " as MIP maps; " << mb(t.encoded_bytes)
+         << " MB encoded, " << mb(t.image_bytes) << " MB decoded), memory " << mb(t.memory_used)
+         << " MB used, peak " << mb(t.memory_peak) << " MB, limit " << std::fixed
+         << std::setprecision(0) << t.limit_mb << " MB";
     return text.str();
 }
 
