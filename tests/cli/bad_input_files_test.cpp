@@ -310,7 +310,7 @@ TEST_F(BadInputFiles, PolygonsAboveTheVertexLimitAreRefusedAtTheirFace) {
 }
 
 // A binary STL whose triangle count its size cannot hold (2^32 - 1 in a 134-byte file) is
-// refused with both numbers, before assimp reads it; one cut short of its header too.
+// refused with both numbers, before anything is allocated; one cut short of its header too.
 TEST_F(BadInputFiles, BinaryStlCountsBeyondTheFileAreRefused) {
     auto stl = [](uint32_t count, size_t triangles) {
         std::string bytes(80, ' ');
@@ -339,9 +339,10 @@ TEST_F(BadInputFiles, BinaryStlCountsBeyondTheFileAreRefused) {
     EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
-// PLY bodies walked before assimp reads them: a binary file cut short is refused at the instance
-// that runs past the end (assimp read zeros and blamed a vertex index), a negative list count
-// at its instance or line (assimp ran out of memory).
+// PLY bodies cut short or with negative list counts: a binary file cut short is refused at the
+// instance that runs past the end (assimp, which read PLY before rayo's reader, read zeros and
+// blamed a vertex index), a negative list count at its instance or line (assimp ran out of
+// memory).
 TEST_F(BadInputFiles, PlyBodiesCutShortOrWithNegativeListCountsAreRefused) {
     auto binary_ply = [](const char* count_type, int8_t face_count) {
         std::string bytes =

@@ -471,7 +471,7 @@ TEST_F(BadInputGltf, TruncatedFileAndMissingBuffer) {
     expect_refused("render scene.json -o out.png", "m.glb", "glTF", "not a glb");
 }
 
-// ---- PLY and STL (assimp), directly and through a JSON scene ---------------------------------
+// ---- PLY and STL (rayo's readers), directly and through a JSON scene -------------------------
 
 TEST_F(BadInputPlyStl, TruncatedOutOfRangeAndEmptyFiles) {
     const std::string header =

@@ -1,6 +1,6 @@
 // The command line's help (`rayo --help`: the commands and every input format; `rayo COMMAND
-// --help`: that command's usage and flags only) and model files in the formats read through
-// assimp (PLY, STL), rendered directly, described by `rayo info`, and named by a JSON scene.
+// --help`: that command's usage and flags only) and model files in the formats rayo reads itself
+// (PLY, STL), rendered directly, described by `rayo info`, and named by a JSON scene.
 #include <algorithm>
 #include <string>
 #include <vector>
