@@ -20,11 +20,11 @@ namespace {
 constexpr const char* kMagicLine = "rayo progressive passes 1";
 constexpr size_t kMaxHeaderBytes = size_t(1) << 20;
 
-// The sums' checksum: both arrays' (each a multiple of 8 bytes), combined.
-uint64_t sums_checksum(const float* rgba, size_t rgba_count, const double* luminance,
-                       size_t luminance_count) {
-    return checksum64(rgba, rgba_count * sizeof(float)) * 0x100000001b3ULL ^
-           checksum64(luminance, luminance_count * sizeof(double));
+// The sums' checksum: the RGBA floats' bytes and the luminance doubles' bytes (each a multiple
+// of 8), combined.
+uint64_t sums_checksum(const void* rgba, size_t rgba_bytes, const void* luminance,
+                       size_t luminance_bytes) {
+    return checksum64(rgba, rgba_bytes) * 0x100000001b3ULL ^ checksum64(luminance, luminance_bytes);
 }
 
 }  // namespace
@@ -129,13 +129,9 @@ std::unique_ptr<PassJournal> PassJournal::resume(const std::string& output,
         throw damaged("holds " + std::to_string(journal->m_saved.size()) +
                       " bytes of sums where its header says " + std::to_string(body));
     }
+    const size_t rgba_bytes = pixels * 4 * sizeof(float);
     const char* bytes = journal->m_saved.data();
-    std::vector<float> rgba(pixels * 4);
-    std::vector<double> luminance(pixels * 2);
-    std::memcpy(rgba.data(), bytes, rgba.size() * sizeof(float));
-    std::memcpy(luminance.data(), bytes + rgba.size() * sizeof(float),
-                luminance.size() * sizeof(double));
-    if (sums_checksum(rgba.data(), rgba.size(), luminance.data(), luminance.size()) != checksum)
+    if (sums_checksum(bytes, rgba_bytes, bytes + rgba_bytes, body - rgba_bytes) != checksum)
         throw damaged("is damaged (its sums do not match their checksum)");
     return journal;
 }
@@ -188,7 +184,8 @@ void PassJournal::write(const PassAccumulator& accumulator, const ProgressiveRes
     header << elapsed << "\n= size: " << accumulator.width() << "x"
            << rgba.size() / 4 / static_cast<size_t>(accumulator.width())
            << "\n= checksum: " << std::hex
-           << sums_checksum(rgba.data(), rgba.size(), luminance.data(), luminance.size())
+           << sums_checksum(rgba.data(), rgba.size() * sizeof(float), luminance.data(),
+                            luminance.size() * sizeof(double))
            << "\nend\n";
     const std::string tmp = m_path + ".tmp" + std::to_string(::getpid());
     {

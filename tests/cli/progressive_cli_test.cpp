@@ -4,6 +4,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "tests/cli/cli_fixture.h"
@@ -91,8 +92,8 @@ TEST_F(ProgressiveCli, AnInterruptedRenderResumesFromItsPassesToTheSameBits) {
     EXPECT_FALSE(std::filesystem::exists(m_dir / "part.exr"));
     ASSERT_TRUE(std::filesystem::exists(m_dir / "part.exr.rayo-passes"));
 
-    const CommandResult other = run(
-        "render scene.json --time-limit 1000 --pass-spp 4 --max-spp 12 -o part.exr --resume");
+    const CommandResult other =
+        run("render scene.json --time-limit 1000 --pass-spp 4 --max-spp 12 -o part.exr --resume");
     EXPECT_EQ(other.exit_code, 1) << other.output;
     EXPECT_NE(other.output.find("pass spp: 2 in the kept passes, 4 now"), std::string::npos)
         << other.output;
@@ -107,15 +108,14 @@ TEST_F(ProgressiveCli, AnInterruptedRenderResumesFromItsPassesToTheSameBits) {
     ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
     EXPECT_NE(resumed.output.find("rayo: resuming part.exr.rayo-passes: "), std::string::npos)
         << resumed.output;
-    EXPECT_NE(resumed.output.find(" 12spp (6 passes, noise "), std::string::npos)
-        << resumed.output;
+    EXPECT_NE(resumed.output.find(" 12spp (6 passes, noise "), std::string::npos) << resumed.output;
     EXPECT_EQ(read_pixels("part.exr"), read_pixels("full.exr"));
     EXPECT_FALSE(std::filesystem::exists(m_dir / "part.exr.rayo-passes"));
 
     // A journal cut short is refused, and left for the user to remove.
-    ASSERT_EQ(run(render + "-o cut.exr --journal-after 0", "RAYO_TEST_INTERRUPT_PASSES=1")
-                  .exit_code,
-              130);
+    ASSERT_EQ(
+        run(render + "-o cut.exr --journal-after 0", "RAYO_TEST_INTERRUPT_PASSES=1").exit_code,
+        130);
     const auto journal = m_dir / "cut.exr.rayo-passes";
     std::filesystem::resize_file(journal, std::filesystem::file_size(journal) - 8);
     const CommandResult damaged = run(render + "-o cut.exr --resume");
@@ -123,6 +123,22 @@ TEST_F(ProgressiveCli, AnInterruptedRenderResumesFromItsPassesToTheSameBits) {
     EXPECT_NE(damaged.output.find("bytes of sums where its header says"), std::string::npos)
         << damaged.output;
     EXPECT_FALSE(std::filesystem::exists(m_dir / "cut.exr"));
+
+    // A sum changed on the disk: the checksum says so.
+    ASSERT_EQ(
+        run(render + "-o flip.exr --journal-after 0", "RAYO_TEST_INTERRUPT_PASSES=1").exit_code,
+        130);
+    {
+        std::fstream file(m_dir / "flip.exr.rayo-passes",
+                          std::ios::in | std::ios::out | std::ios::binary);
+        file.seekp(-3, std::ios::end);
+        file.put('\x5a');
+    }
+    const CommandResult flipped = run(render + "-o flip.exr --resume");
+    EXPECT_EQ(flipped.exit_code, 1) << flipped.output;
+    EXPECT_NE(flipped.output.find("do not match their checksum"), std::string::npos)
+        << flipped.output;
+    EXPECT_FALSE(std::filesystem::exists(m_dir / "flip.exr"));
 }
 
 TEST_F(ProgressiveCli, HelpListsTheProgressiveSettingsAsOffByDefault) {
