@@ -33,10 +33,9 @@ std::string pass_journal_path(const std::string& output) {
     return output + ".rayo-passes";
 }
 
-PassJournal::PassJournal(std::string output, RenderFingerprint fingerprint,
+PassJournal::PassJournal(const std::string& output, RenderFingerprint fingerprint,
                          std::chrono::steady_clock::duration keep_after)
-    : m_output(std::move(output)),
-      m_path(pass_journal_path(m_output)),
+    : m_path(pass_journal_path(output)),
       m_fingerprint(std::move(fingerprint)),
       m_keep_after(keep_after),
       m_start(std::chrono::steady_clock::now()) {}
@@ -90,7 +89,7 @@ std::unique_ptr<PassJournal> PassJournal::resume(const std::string& output,
     // The state entries follow the fingerprint's.
     ProgressiveResult& kept = journal->m_kept;
     uint64_t checksum = 0;
-    int found = 0;
+    int found = 0, width = 0, height = 0;
     for (auto it = saved.begin(); it != saved.end();) {
         std::istringstream value(it->second);
         if (it->first == "= passes") {
@@ -101,7 +100,7 @@ std::unique_ptr<PassJournal> PassJournal::resume(const std::string& output,
             found += static_cast<bool>(value >> journal->m_kept_seconds);
         } else if (it->first == "= size") {
             char x = 0;
-            found += static_cast<bool>(value >> journal->m_width >> x >> journal->m_height);
+            found += static_cast<bool>(value >> width >> x >> height);
         } else if (it->first == "= checksum") {
             found += static_cast<bool>(value >> std::hex >> checksum);
         } else {
@@ -110,9 +109,8 @@ std::unique_ptr<PassJournal> PassJournal::resume(const std::string& output,
         }
         it = saved.erase(it);
     }
-    if (found != 5 || kept.passes < 1 || kept.spp < 1 || journal->m_width < 1 ||
-        journal->m_height < 1 ||
-        static_cast<long long>(journal->m_width) * journal->m_height > kMaxProgressivePixels) {
+    if (found != 5 || kept.passes < 1 || kept.spp < 1 || width < 1 || height < 1 ||
+        static_cast<long long>(width) * height > kMaxProgressivePixels) {
         throw damaged("has a damaged header");
     }
     const std::string differences = fingerprint_differences(saved, fingerprint, "kept passes");
@@ -122,7 +120,7 @@ std::unique_ptr<PassJournal> PassJournal::resume(const std::string& output,
                                      "\nresume with the same scene and settings, or remove it "
                                      "to start over");
     }
-    const size_t pixels = static_cast<size_t>(journal->m_width) * journal->m_height;
+    const size_t pixels = static_cast<size_t>(width) * height;
     const size_t body = pixels * (4 * sizeof(float) + 2 * sizeof(double));
     journal->m_saved.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     if (journal->m_saved.size() != body) {

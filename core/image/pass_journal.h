@@ -54,18 +54,17 @@ class PassJournal : public ProgressiveCheckpoint {
                        double elapsed) override;
 
   private:
-    PassJournal(std::string output, RenderFingerprint fingerprint,
+    PassJournal(const std::string& output, RenderFingerprint fingerprint,
                 std::chrono::steady_clock::duration keep_after);
     void write(const PassAccumulator& accumulator, const ProgressiveResult& so_far, double elapsed);
 
-    std::string m_output, m_path;
+    std::string m_path;
     RenderFingerprint m_fingerprint;
     std::chrono::steady_clock::duration m_keep_after;
     std::chrono::steady_clock::time_point m_start, m_last_write;
     std::chrono::steady_clock::duration m_write_took{0};
     ProgressiveResult m_kept;  // what the file holds
     double m_kept_seconds = 0.0;
-    int m_width = 0, m_height = 0;
     std::string m_saved;  // a resumed journal's sums, until restore() takes them
     std::string m_failure;
     int m_interrupt_after = 0;
